@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_Geometry_h
+#define labelmesher_Geometry_h
+
+/**
+ * @file Geometry.h
+ * Small exact-as-floating-point geometric primitives used by the mesher's
+ * fidelity test and by the checks: distances from a point to a segment, a
+ * triangle and an axis-aligned square (a voxel face).
+ */
+
+#include "SimplexMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace labelmesher
+{
+namespace geometry
+{
+
+inline Point3 Sub(const Point3& a, const Point3& b) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
+inline Point3 Add(const Point3& a, const Point3& b) { return { a[0] + b[0], a[1] + b[1], a[2] + b[2] }; }
+inline Point3 Scale(const Point3& a, double s) { return { a[0] * s, a[1] * s, a[2] * s }; }
+inline double Dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Point3 Cross(const Point3& a, const Point3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+inline double Norm(const Point3& a) { return std::sqrt(Dot(a, a)); }
+inline double Distance(const Point3& a, const Point3& b) { return Norm(Sub(a, b)); }
+
+/// Squared distance from p to segment [a, b].
+inline double SquaredDistanceToSegment(const Point3& p, const Point3& a, const Point3& b)
+{
+  const Point3 ab = Sub(b, a);
+  const double len2 = Dot(ab, ab);
+  double t = len2 > 0.0 ? Dot(Sub(p, a), ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Point3 q = Add(a, Scale(ab, t));
+  const Point3 d = Sub(p, q);
+  return Dot(d, d);
+}
+
+/// Squared distance from p to the closed triangle (a, b, c) (Ericson, Real-Time
+/// Collision Detection, 5.1.5).
+inline double SquaredDistanceToTriangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c)
+{
+  const Point3 ab = Sub(b, a), ac = Sub(c, a), ap = Sub(p, a);
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  auto sq = [](const Point3& v) { return Dot(v, v); };
+  if (d1 <= 0 && d2 <= 0)
+    return sq(ap);
+  const Point3 bp = Sub(p, b);
+  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+    return sq(bp);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    return sq(Sub(p, Add(a, Scale(ab, d1 / (d1 - d3)))));
+  const Point3 cp = Sub(p, c);
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+    return sq(cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    return sq(Sub(p, Add(a, Scale(ac, d2 / (d2 - d6)))));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return sq(Sub(p, Add(b, Scale(Sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))))));
+  const double denom = 1.0 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return sq(Sub(p, Add(a, Add(Scale(ab, v), Scale(ac, w)))));
+}
+
+/// Squared distance from p to the axis-aligned box [lo, hi] (a voxel face is a
+/// box with lo == hi along its normal axis; a pixel edge along two axes).
+inline double SquaredDistanceToBox(const Point3& p, const Point3& lo, const Point3& hi)
+{
+  double s = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double d = p[a] < lo[a] ? lo[a] - p[a] : (p[a] > hi[a] ? p[a] - hi[a] : 0.0);
+    s += d * d;
+  }
+  return s;
+}
+
+} // namespace geometry
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_LabelOctreeMesher_h
+#define labelmesher_LabelOctreeMesher_h
+
+/**
+ * @file LabelOctreeMesher.h
+ * The ORD initial mesh (dissertation chapter 3, Algorithms 1-3) as one free
+ * function over VTK-free types: a multi-label image in, a conforming, labelled
+ * triangle (2D) or tetrahedral (3D) mesh out.
+ */
+
+#include "LabelImage.h"
+#include "ProgressObserver.h"
+#include "SimplexMesh.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct MesherParameters
+{
+  /// h(I, M): every point of the image boundary lies within this distance of the
+  /// mesh boundary. Voxel units, >= 0.
+  double ImageToMeshDistance = 2.0;
+  /// h(M, I): every point of the mesh boundary lies within this distance of the
+  /// image boundary. Voxel units, >= 0.
+  double MeshToImageDistance = 2.0;
+};
+
+struct StageTiming
+{
+  std::string Stage;
+  double Seconds = 0.0;
+};
+
+struct MesherResult
+{
+  /// Every cell of the padded octree domain, background (label 0) included.
+  SimplexMesh Mesh;
+  /// Boundary between different materials (background included): triangles in
+  /// 3D, segments in 2D, with the labels on either side.
+  SimplexMesh Boundary;
+  std::vector<std::pair<std::int32_t, std::int32_t>> BoundaryMaterials;
+  std::vector<StageTiming> Timings;
+  std::size_t NumberOfLeaves = 0;
+};
+
+/// Meshes `image`. Throws std::invalid_argument for bad input (no foreground,
+/// negative labels, empty extent) and AbortRequested when `observer` says stop.
+MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& parameters,
+  const ProgressObserver& observer = {});
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
+# Installs the Debian 12 packages needed to build and test LabelMesher.
+# Idempotent: when every package is already installed it does nothing (no apt).
+# Needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libvtk9-dev python3-vtk9            # VTK 9.1 + its Python wrapping (filters, I/O, module system)
+  libinsighttoolkit5-dev libgdcm-tools # ITK 5.2 image readers (NRRD, NIfTI, MetaImage); gdcm tools silence ITK's config
+  libeigen3-dev
+  qtbase5-dev
+  libp4est-dev mpi-default-dev        # the octree (p4est 2.2, GPL-2.0-or-later) and the MPI it is built against
+  libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
+  libcgal-dev                          # baseline comparisons in the benchmarks
+  python3-numpy                        # Python tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-dependencies: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+echo "install-dependencies: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update
+$sudo apt-get install -y --no-install-recommends "${packages[@]}"

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
+# Install dependencies, build, and mesh the bundled example into out/.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+cd "$here/../.."
+bash "$here/install-dependencies.sh"
+bash "$here/build.sh"
+mkdir -p out
+build/bin/labelmesher mesh Resources/Data/rat_head.nrrd -o out/example.vtu --report out/example.json
+echo "Wrote out/example.vtu (open it in ParaView or 3D Slicer) and out/example.json"

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "Arguments.h"
+
+#include <cmath>
+#include <vector>
+
+namespace labelmesher_cli
+{
+namespace
+{
+
+bool EndsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+double ParseDistance(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double value = 0.0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value) || value < 0.0)
+  {
+    throw UsageError(option + " expects a non-negative number of voxels, got '" + text + "'");
+  }
+  return value;
+}
+
+} // namespace
+
+std::string Usage()
+{
+  return "Usage: labelmesher mesh INPUT -o OUTPUT [options]\n"
+         "\n"
+         "Meshes a label image (integer labels, 0 = background) into labelled tetrahedra (3D)\n"
+         "or triangles (2D images) with bounded angles and bounded Hausdorff distance.\n"
+         "\n"
+         "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel)\n"
+         "\n"
+         "Options:\n"
+         "  -o, --output FILE          output mesh: .vtu (VTK XML) or .vtk (legacy)   [required]\n"
+         "  --image-to-mesh H1         h(I,M) bound: image boundary to mesh boundary, in voxels\n"
+         "                             of the smallest spacing                        [default 2]\n"
+         "  --mesh-to-image H2         h(M,I) bound: mesh boundary to image boundary, in voxels\n"
+         "                             of the smallest spacing                        [default 2]\n"
+         "  --hausdorff H              set both bounds to H voxels\n"
+         "  --report FILE.json         write the summary as JSON\n"
+         "  --include-background       keep the cells of label 0\n"
+         "  --quiet                    no progress bar, no summary (errors only)\n"
+         "  -h, --help                 this text\n"
+         "  --version                  print the version\n";
+}
+
+Arguments ParseArguments(int argc, const char* const* argv)
+{
+  Arguments args;
+  std::vector<std::string> words(argv + 1, argv + argc);
+  std::vector<std::string> positional;
+  for (std::size_t w = 0; w < words.size(); ++w)
+  {
+    std::string word = words[w];
+    std::string value;
+    bool hasInlineValue = false;
+    if (word.rfind("--", 0) == 0)
+    {
+      const std::size_t eq = word.find('=');
+      if (eq != std::string::npos)
+      {
+        value = word.substr(eq + 1);
+        word = word.substr(0, eq);
+        hasInlineValue = true;
+      }
+    }
+    auto takeValue = [&]() -> std::string {
+      if (hasInlineValue)
+      {
+        return value;
+      }
+      if (w + 1 >= words.size())
+      {
+        throw UsageError(word + " needs a value");
+      }
+      return words[++w];
+    };
+    auto noValue = [&]() {
+      if (hasInlineValue)
+      {
+        throw UsageError(word + " takes no value");
+      }
+    };
+
+    if (word == "-h" || word == "--help")
+    {
+      noValue();
+      args.Help = true;
+    }
+    else if (word == "--version")
+    {
+      noValue();
+      args.Version = true;
+    }
+    else if (word == "-o" || word == "--output")
+    {
+      args.Output = takeValue();
+    }
+    else if (word == "--report")
+    {
+      args.Report = takeValue();
+    }
+    else if (word == "--image-to-mesh")
+    {
+      args.ImageToMeshDistance = ParseDistance(word, takeValue());
+    }
+    else if (word == "--mesh-to-image")
+    {
+      args.MeshToImageDistance = ParseDistance(word, takeValue());
+    }
+    else if (word == "--hausdorff")
+    {
+      args.ImageToMeshDistance = args.MeshToImageDistance = ParseDistance(word, takeValue());
+    }
+    else if (word == "--include-background")
+    {
+      noValue();
+      args.IncludeBackground = true;
+    }
+    else if (word == "--quiet" || word == "-q")
+    {
+      noValue();
+      args.Quiet = true;
+    }
+    else if (word.size() > 1 && word[0] == '-')
+    {
+      throw UsageError("unknown option " + word);
+    }
+    else
+    {
+      positional.push_back(word);
+    }
+  }
+  if (args.Help || args.Version)
+  {
+    return args;
+  }
+  if (positional.empty())
+  {
+    throw UsageError("missing command: expected 'mesh'");
+  }
+  if (positional[0] != "mesh")
+  {
+    throw UsageError("unknown command '" + positional[0] + "': expected 'mesh'");
+  }
+  if (positional.size() < 2)
+  {
+    throw UsageError("missing INPUT image");
+  }
+  if (positional.size() > 2)
+  {
+    throw UsageError("unexpected argument '" + positional[2] + "'");
+  }
+  args.Input = positional[1];
+  if (args.Output.empty())
+  {
+    throw UsageError("missing -o OUTPUT (.vtu or .vtk)");
+  }
+  if (!EndsWith(args.Output, ".vtu") && !EndsWith(args.Output, ".vtk"))
+  {
+    throw UsageError("output '" + args.Output + "' must end in .vtu or .vtk");
+  }
+  return args;
+}
+
+} // namespace labelmesher_cli

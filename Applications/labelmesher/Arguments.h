@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_Arguments_h
+#define labelmesher_cli_Arguments_h
+
+/**
+ * @file Arguments.h
+ * Command line of `labelmesher mesh INPUT -o OUTPUT [options]`.
+ */
+
+#include <stdexcept>
+#include <string>
+
+namespace labelmesher_cli
+{
+
+/// A command line that cannot be run; main prints it with the usage hint.
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Arguments
+{
+  std::string Input;
+  std::string Output;              ///< .vtu (VTK XML) or .vtk (legacy)
+  std::string Report;              ///< JSON report path; empty: none
+  double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
+  double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
+  bool IncludeBackground = false;
+  bool Quiet = false;
+  bool Help = false;
+  bool Version = false;
+};
+
+/// Parses argv; throws UsageError with a one-line reason.
+Arguments ParseArguments(int argc, const char* const* argv);
+
+/// The help text.
+std::string Usage();
+
+} // namespace labelmesher_cli
+
+#endif

@@ -1,0 +1,376 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "ImageReader.h"
+
+#include "itkImage.h"
+#include "itkImageFileReader.h"
+#include "itkImageIOBase.h"
+#include "itkImageIOFactory.h"
+
+#include "vtkAOSDataArrayTemplate.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkXMLImageDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace labelmesher_cli
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool EndsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string VoxelText(std::size_t flat, const int dims[3])
+{
+  const std::size_t nx = dims[0], ny = dims[1];
+  std::ostringstream s;
+  s << "(" << flat % nx << ", " << (flat / nx) % ny << ", " << flat / (nx * ny) << ")";
+  return s.str();
+}
+
+/// Captures the first error a VTK reader reports instead of printing it.
+class VTKErrorCatcher
+{
+public:
+  explicit VTKErrorCatcher(vtkObject* object)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+      auto* self = static_cast<VTKErrorCatcher*>(clientData);
+      if (self->Message.empty() && callData)
+      {
+        std::string text = static_cast<const char*>(callData);
+        const std::size_t at = text.find("): ");
+        text = at == std::string::npos ? text : text.substr(at + 3);
+        text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
+        self->Message = text;
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+  std::string Message;
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+void CheckSpacing(const double spacing[3], const std::string& path)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
+    {
+      std::ostringstream s;
+      s << "'" << path << "' has spacing " << spacing[a] << " along axis " << a
+        << ": expected a positive, finite value";
+      throw InputError(s.str());
+    }
+  }
+}
+
+// ---- ITK: NRRD, NIfTI, MetaImage ----------------------------------------------
+
+/// Uncompressed formats whose data length we can compare with the header.
+void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
+{
+  const std::string lower = Lower(path);
+  const std::uintmax_t bytes = io->GetImageSizeInBytes();
+  std::uintmax_t fileSize = fs::file_size(path);
+  std::uintmax_t header = 0;
+  if (EndsWith(lower, ".nii"))
+  {
+    header = 352; // NIfTI-1 header + extension flag; vox_offset is at least this
+  }
+  else if (EndsWith(lower, ".mha") || EndsWith(lower, ".nrrd"))
+  {
+    // Attached data: uncompressed only (the header is text, read it).
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    bool raw = false;
+    while (std::getline(in, line) && !line.empty() && line != "\r")
+    {
+      const std::string l = Lower(line);
+      if (l.rfind("encoding:", 0) == 0)
+      {
+        raw = l.find("raw") != std::string::npos;
+      }
+      if (l.rfind("compresseddata", 0) == 0)
+      {
+        raw = l.find("false") != std::string::npos;
+      }
+      if (l.rfind("elementdatafile", 0) == 0)
+      {
+        raw = raw || EndsWith(lower, ".mha");
+        if (l.find("local") == std::string::npos)
+        {
+          return; // detached data file
+        }
+        break; // MetaImage data follows this line
+      }
+      if (l.rfind("data file:", 0) == 0 || l.rfind("datafile:", 0) == 0)
+      {
+        return; // detached NRRD data
+      }
+    }
+    if (!raw)
+    {
+      return;
+    }
+    header = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
+  }
+  else
+  {
+    return;
+  }
+  if (fileSize < header + bytes)
+  {
+    std::ostringstream s;
+    s << "'" << path << "' is truncated: the header announces " << bytes
+      << " bytes of voxel data, the file holds at most " << (fileSize > header ? fileSize - header : 0);
+    throw InputError(s.str());
+  }
+}
+
+template <typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::ImageIOBase* io)
+{
+  using ImageType = itk::Image<TPixel, 3>;
+  auto reader = itk::ImageFileReader<ImageType>::New();
+  reader->SetFileName(path);
+  reader->SetImageIO(io);
+  reader->Update();
+  typename ImageType::Pointer image = reader->GetOutput();
+  image->DisconnectPipeline();
+  return image;
+}
+
+template <typename TImage>
+vtkSmartPointer<vtkImageData> GeometryFromITK(TImage* image, const std::string& path)
+{
+  const auto size = image->GetLargestPossibleRegion().GetSize();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->SetDimensions(static_cast<int>(size[0]), static_cast<int>(size[1]), static_cast<int>(size[2]));
+  double spacing[3], origin[3], direction[9];
+  for (int r = 0; r < 3; ++r)
+  {
+    spacing[r] = image->GetSpacing()[r];
+    origin[r] = image->GetOrigin()[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      direction[3 * r + c] = image->GetDirection()[r][c];
+      if (!std::isfinite(direction[3 * r + c]))
+      {
+        throw InputError("'" + path + "' has a non-finite direction matrix");
+      }
+    }
+    if (!std::isfinite(origin[r]))
+    {
+      throw InputError("'" + path + "' has a non-finite origin");
+    }
+  }
+  CheckSpacing(spacing, path);
+  output->SetSpacing(spacing);
+  output->SetOrigin(origin);
+  output->SetDirectionMatrix(direction);
+  return output;
+}
+
+/// Integer pixels: copied as they are (the filter accepts every integer type).
+template <typename TPixel>
+vtkSmartPointer<vtkImageData> IntegerFromITK(const std::string& path, itk::ImageIOBase* io)
+{
+  auto image = ReadITK<TPixel>(path, io);
+  auto output = GeometryFromITK(image.GetPointer(), path);
+  vtkNew<vtkAOSDataArrayTemplate<TPixel>> labels;
+  labels->SetName("Labels");
+  const std::size_t n = image->GetLargestPossibleRegion().GetNumberOfPixels();
+  labels->SetNumberOfValues(static_cast<vtkIdType>(n));
+  std::copy(image->GetBufferPointer(), image->GetBufferPointer() + n, labels->GetPointer(0));
+  output->GetPointData()->SetScalars(labels);
+  return output;
+}
+
+/// Floating-point pixels: accepted only if every value is an integer that fits
+/// 32 bits (label maps are often stored as float); converted to int.
+template <typename TPixel>
+vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOBase* io)
+{
+  auto image = ReadITK<TPixel>(path, io);
+  auto output = GeometryFromITK(image.GetPointer(), path);
+  const std::size_t n = image->GetLargestPossibleRegion().GetNumberOfPixels();
+  const TPixel* values = image->GetBufferPointer();
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfValues(static_cast<vtkIdType>(n));
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double v = static_cast<double>(values[i]);
+    std::string problem;
+    if (!std::isfinite(v))
+    {
+      problem = std::isnan(v) ? "NaN" : "an infinite value";
+    }
+    else if (v != std::floor(v))
+    {
+      std::ostringstream s;
+      s << "the non-integer value " << v;
+      problem = s.str();
+    }
+    else if (v < std::numeric_limits<std::int32_t>::min() || v > std::numeric_limits<std::int32_t>::max())
+    {
+      std::ostringstream s;
+      s << "the value " << v << ", which does not fit a 32-bit label";
+      problem = s.str();
+    }
+    if (!problem.empty())
+    {
+      int dims[3];
+      output->GetDimensions(dims);
+      throw InputError("'" + path + "' is not a label image: voxel " + VoxelText(i, dims) +
+        " holds " + problem);
+    }
+    labels->SetValue(static_cast<vtkIdType>(i), static_cast<int>(v));
+  }
+  output->GetPointData()->SetScalars(labels);
+  return output;
+}
+
+vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
+{
+  itk::ImageIOBase::Pointer io =
+    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  if (!io)
+  {
+    throw InputError("'" + path + "' is not an image format labelmesher reads (.nrrd, .nhdr, .nii, "
+                                  ".nii.gz, .mha, .mhd, .vti, .png)");
+  }
+  io->SetFileName(path);
+  io->ReadImageInformation();
+  if (io->GetNumberOfComponents() != 1)
+  {
+    throw InputError("'" + path + "' has " + std::to_string(io->GetNumberOfComponents()) +
+      " components per voxel: expected a single-channel label image");
+  }
+  for (unsigned int d = 3; d < io->GetNumberOfDimensions(); ++d)
+  {
+    if (io->GetDimensions(d) > 1)
+    {
+      throw InputError("'" + path + "' has " + std::to_string(io->GetNumberOfDimensions()) +
+        " dimensions: expected a 2D or 3D label image");
+    }
+  }
+  CheckNotTruncated(path, io);
+
+  using C = itk::IOComponentEnum;
+  switch (io->GetComponentType())
+  {
+    case C::UCHAR: return IntegerFromITK<unsigned char>(path, io);
+    case C::CHAR: return IntegerFromITK<signed char>(path, io);
+    case C::USHORT: return IntegerFromITK<unsigned short>(path, io);
+    case C::SHORT: return IntegerFromITK<short>(path, io);
+    case C::UINT: return IntegerFromITK<unsigned int>(path, io);
+    case C::INT: return IntegerFromITK<int>(path, io);
+    case C::ULONG: return IntegerFromITK<unsigned long>(path, io);
+    case C::LONG: return IntegerFromITK<long>(path, io);
+    case C::ULONGLONG: return IntegerFromITK<unsigned long long>(path, io);
+    case C::LONGLONG: return IntegerFromITK<long long>(path, io);
+    case C::FLOAT: return RealFromITK<float>(path, io);
+    case C::DOUBLE: return RealFromITK<double>(path, io);
+    default:
+      throw InputError("'" + path + "' has an unsupported pixel type " +
+        itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()));
+  }
+}
+
+// ---- VTK: VTI and PNG ------------------------------------------------------------
+
+template <typename TReader>
+vtkSmartPointer<vtkImageData> ReadWithVTK(const std::string& path)
+{
+  vtkNew<TReader> reader;
+  VTKErrorCatcher errors(reader);
+  VTKErrorCatcher executiveErrors(reader->GetExecutive());
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  const std::string& message =
+    errors.Message.empty() ? executiveErrors.Message : errors.Message;
+  vtkImageData* image = reader->GetOutput();
+  if (!message.empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    throw InputError("cannot read '" + path + "'" + (message.empty() ? "" : ": " + message));
+  }
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->ShallowCopy(image);
+  CheckSpacing(output->GetSpacing(), path);
+  return output;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
+{
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+  {
+    throw InputError("cannot read '" + path + "': no such file");
+  }
+  if (!fs::is_regular_file(path, ec))
+  {
+    throw InputError("cannot read '" + path + "': not a regular file");
+  }
+  const std::string lower = Lower(path);
+  try
+  {
+    if (EndsWith(lower, ".vti"))
+    {
+      return ReadWithVTK<vtkXMLImageDataReader>(path);
+    }
+    if (EndsWith(lower, ".png"))
+    {
+      vtkSmartPointer<vtkImageData> image = ReadWithVTK<vtkPNGReader>(path);
+      const int components = image->GetNumberOfScalarComponents();
+      if (components != 1)
+      {
+        const char* kind = components == 2 ? "grey+alpha" : components == 3 ? "RGB" : "RGBA";
+        throw InputError("'" + path + "' is an " + std::string(kind) + " PNG (" +
+          std::to_string(components) + " channels): expected a single-channel label PNG");
+      }
+      image->GetPointData()->GetScalars()->SetName("Labels");
+      return image;
+    }
+    return ReadWithITK(path);
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    std::string what = e.GetDescription();
+    what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
+    throw InputError("cannot read '" + path + "': " + what);
+  }
+}
+
+} // namespace labelmesher_cli

@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "Report.h"
+
+#include "Arguments.h"
+#include "JsonWriter.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cstdio>
+#include <iomanip>
+
+namespace labelmesher_cli
+{
+namespace
+{
+
+std::optional<double> Field(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
+{
+  vtkDataArray* array = fd ? fd->GetArray(name) : nullptr;
+  if (!array || tuple >= array->GetNumberOfTuples())
+  {
+    return std::nullopt;
+  }
+  return array->GetComponent(tuple, 0);
+}
+
+long long FieldInt(vtkFieldData* fd, const char* name, vtkIdType tuple)
+{
+  return static_cast<long long>(Field(fd, name, tuple).value_or(0.0));
+}
+
+std::string Fixed(double value, int digits)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
+  return buffer;
+}
+
+} // namespace
+
+bool RunReport::TopologyMatches() const
+{
+  for (const auto& entry : this->Topology)
+  {
+    if (!entry.Matches)
+    {
+      return false;
+    }
+  }
+  return !this->Topology.empty();
+}
+
+RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh)
+{
+  RunReport r;
+  r.Input = args.Input;
+  r.Output = args.Output;
+  image->GetDimensions(r.Dimensions.data());
+  image->GetSpacing(r.Spacing.data());
+  r.IncludeBackground = args.IncludeBackground;
+  r.ImageToMeshBound = args.ImageToMeshDistance;
+  r.MeshToImageBound = args.MeshToImageDistance;
+  r.MeshDimension = (r.Dimensions[0] == 1 || r.Dimensions[1] == 1 || r.Dimensions[2] == 1) ? 2 : 3;
+
+  r.Points = mesh->GetNumberOfPoints();
+  r.Cells = mesh->GetNumberOfCells();
+  if (vtkDataArray* material = mesh->GetCellData()->GetArray("Material"))
+  {
+    for (vtkIdType c = 0; c < material->GetNumberOfTuples(); ++c)
+    {
+      ++r.CellsPerMaterial[static_cast<int>(material->GetComponent(c, 0))];
+    }
+  }
+
+  vtkFieldData* fd = mesh->GetFieldData();
+  r.VoxelSize = Field(fd, "VoxelSize").value_or(1.0);
+  r.MinimumAngle = Field(fd, "MinimumAngle");
+  r.MaximumAngle = Field(fd, "MaximumAngle");
+  r.InvertedCells = Field(fd, "InvertedCells");
+  r.MeasuredImageToMesh = Field(fd, "MeasuredImageToMeshDistance");
+  r.MeasuredMeshToImage = Field(fd, "MeasuredMeshToImageDistance");
+  if (vtkDataArray* materials = fd->GetArray("TopologyMaterial"))
+  {
+    for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
+    {
+      TopologyEntry e;
+      e.Material = static_cast<int>(materials->GetComponent(t, 0));
+      e.ImageComponents = FieldInt(fd, "ImageComponents", t);
+      e.ImageEuler = FieldInt(fd, "ImageEulerCharacteristic", t);
+      e.MeshComponents = FieldInt(fd, "MeshComponents", t);
+      e.MeshEuler = FieldInt(fd, "MeshEulerCharacteristic", t);
+      e.Matches = FieldInt(fd, "TopologyMatches", t) != 0;
+      r.Topology.push_back(e);
+    }
+  }
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray("StageName"));
+  vtkDataArray* seconds = fd->GetArray("StageSeconds");
+  if (names && seconds)
+  {
+    for (vtkIdType s = 0; s < names->GetNumberOfValues() && s < seconds->GetNumberOfTuples(); ++s)
+    {
+      r.Timings.emplace_back(names->GetValue(s), seconds->GetComponent(s, 0));
+    }
+  }
+  return r;
+}
+
+void PrintSummary(const RunReport& r, std::ostream& out)
+{
+  const char* cellName = r.MeshDimension == 3 ? "tetrahedra" : "triangles";
+  out << "Input   " << r.Input << "  (" << r.Dimensions[0] << " x " << r.Dimensions[1] << " x "
+      << r.Dimensions[2] << " voxels, spacing " << r.Spacing[0] << " x " << r.Spacing[1] << " x "
+      << r.Spacing[2] << ")\n";
+  out << "Output  " << r.Output << "  (" << r.Cells << " " << cellName << ", " << r.Points
+      << " points)\n";
+  out << "Cells per material:\n";
+  for (const auto& entry : r.CellsPerMaterial)
+  {
+    out << "  " << std::setw(6) << entry.first << "  " << entry.second << "\n";
+  }
+  const std::string unit = " voxels (1 voxel = " + Fixed(r.VoxelSize, 4) + ")";
+  if (r.Measured())
+  {
+    out << "Minimum " << (r.MeshDimension == 3 ? "dihedral" : "planar")
+        << " angle: " << Fixed(*r.MinimumAngle, 2) << " deg  (maximum "
+        << Fixed(r.MaximumAngle.value_or(0.0), 2) << " deg, inverted cells "
+        << static_cast<long long>(r.InvertedCells.value_or(0.0)) << ")\n";
+    out << "Hausdorff h(I,M): " << Fixed(r.MeasuredImageToMesh.value_or(0.0), 3) << " (bound "
+        << Fixed(r.ImageToMeshBound, 3) << ")" << unit << "\n";
+    out << "Hausdorff h(M,I): " << Fixed(r.MeasuredMeshToImage.value_or(0.0), 3) << " (bound "
+        << Fixed(r.MeshToImageBound, 3) << ")" << unit << "\n";
+    out << "Topology (components, Euler characteristic; image vs mesh):\n";
+    for (const auto& e : r.Topology)
+    {
+      out << "  " << std::setw(6) << e.Material << "  (" << e.ImageComponents << ", "
+          << e.ImageEuler << ") vs (" << e.MeshComponents << ", " << e.MeshEuler << ")  "
+          << (e.Matches ? "match" : "MISMATCH") << "\n";
+    }
+  }
+  else
+  {
+    out << "Quality, distances and topology: not measured (checks not built)\n";
+  }
+  out << "Time per stage:\n";
+  double total = 0.0;
+  for (const auto& t : r.Timings)
+  {
+    out << "  " << std::left << std::setw(20) << t.first << std::right << Fixed(t.second, 3)
+        << " s\n";
+    total += t.second;
+  }
+  out << "  " << std::left << std::setw(20) << "total" << std::right << Fixed(total, 3) << " s\n";
+}
+
+void WriteJson(const RunReport& r, std::ostream& out)
+{
+  JsonWriter j(out);
+  auto optional = [&j](const std::optional<double>& v) {
+    if (v)
+    {
+      j.Number(*v);
+    }
+    else
+    {
+      j.Null();
+    }
+  };
+  j.BeginObject();
+  j.Key("input").String(r.Input);
+  j.Key("output").String(r.Output);
+  j.Key("image").BeginObject();
+  j.Key("dimensions").BeginArray();
+  for (int d : r.Dimensions)
+  {
+    j.Integer(d);
+  }
+  j.EndArray();
+  j.Key("spacing").BeginArray();
+  for (double s : r.Spacing)
+  {
+    j.Number(s);
+  }
+  j.EndArray();
+  j.EndObject();
+  j.Key("parameters").BeginObject();
+  j.Key("image_to_mesh").Number(r.ImageToMeshBound);
+  j.Key("mesh_to_image").Number(r.MeshToImageBound);
+  j.Key("include_background").Bool(r.IncludeBackground);
+  j.Key("distance_unit").Number(r.VoxelSize);
+  j.EndObject();
+  j.Key("mesh").BeginObject();
+  j.Key("dimension").Integer(r.MeshDimension);
+  j.Key("cell_type").String(r.MeshDimension == 3 ? "tetra" : "triangle");
+  j.Key("points").Integer(r.Points);
+  j.Key("cells").Integer(r.Cells);
+  j.Key("cells_per_material").BeginObject();
+  for (const auto& entry : r.CellsPerMaterial)
+  {
+    j.Key(std::to_string(entry.first)).Integer(entry.second);
+  }
+  j.EndObject();
+  j.EndObject();
+  j.Key("measured").Bool(r.Measured());
+  j.Key("quality").BeginObject();
+  j.Key("angle_kind").String(r.MeshDimension == 3 ? "dihedral" : "planar");
+  j.Key("minimum_angle_degrees");
+  optional(r.MinimumAngle);
+  j.Key("maximum_angle_degrees");
+  optional(r.MaximumAngle);
+  j.Key("inverted_cells");
+  optional(r.InvertedCells);
+  j.EndObject();
+  j.Key("fidelity").BeginObject();
+  j.Key("unit").String("voxels of the smallest spacing");
+  j.Key("image_to_mesh");
+  optional(r.MeasuredImageToMesh);
+  j.Key("mesh_to_image");
+  optional(r.MeasuredMeshToImage);
+  j.Key("image_to_mesh_bound").Number(r.ImageToMeshBound);
+  j.Key("mesh_to_image_bound").Number(r.MeshToImageBound);
+  j.EndObject();
+  j.Key("topology").BeginObject();
+  j.Key("all_match");
+  if (r.Measured())
+  {
+    j.Bool(r.TopologyMatches());
+  }
+  else
+  {
+    j.Null();
+  }
+  j.Key("materials").BeginArray();
+  for (const auto& e : r.Topology)
+  {
+    j.BeginObject();
+    j.Key("material").Integer(e.Material);
+    j.Key("image_components").Integer(e.ImageComponents);
+    j.Key("image_euler_characteristic").Integer(e.ImageEuler);
+    j.Key("mesh_components").Integer(e.MeshComponents);
+    j.Key("mesh_euler_characteristic").Integer(e.MeshEuler);
+    j.Key("matches").Bool(e.Matches);
+    j.EndObject();
+  }
+  j.EndArray();
+  j.EndObject();
+  j.Key("timings").BeginArray();
+  double total = 0.0;
+  for (const auto& t : r.Timings)
+  {
+    j.BeginObject();
+    j.Key("stage").String(t.first);
+    j.Key("seconds").Number(t.second);
+    j.EndObject();
+    total += t.second;
+  }
+  j.EndArray();
+  j.Key("total_seconds").Number(total);
+  j.EndObject();
+}
+
+} // namespace labelmesher_cli

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_Report_h
+#define labelmesher_cli_Report_h
+
+/**
+ * @file Report.h
+ * What a run produced, gathered from vtkLabelOctreeMesher's output (cell data and
+ * field data) and printed as a text summary or written as JSON.
+ */
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkImageData;
+class vtkUnstructuredGrid;
+
+namespace labelmesher_cli
+{
+
+struct Arguments;
+
+struct TopologyEntry
+{
+  int Material = 0;
+  long long ImageComponents = 0, ImageEuler = 0;
+  long long MeshComponents = 0, MeshEuler = 0;
+  bool Matches = false;
+};
+
+struct RunReport
+{
+  std::string Input, Output;
+  std::array<int, 3> Dimensions{ 0, 0, 0 };
+  std::array<double, 3> Spacing{ 0, 0, 0 };
+  int MeshDimension = 3;
+  double ImageToMeshBound = 0, MeshToImageBound = 0, VoxelSize = 1;
+  bool IncludeBackground = false;
+  long long Points = 0, Cells = 0;
+  std::map<int, long long> CellsPerMaterial;
+  /// Present only when the filter measured its output.
+  std::optional<double> MinimumAngle, MaximumAngle, InvertedCells;
+  std::optional<double> MeasuredImageToMesh, MeasuredMeshToImage;
+  std::vector<TopologyEntry> Topology;
+  std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
+
+  bool Measured() const { return MinimumAngle.has_value(); }
+  bool TopologyMatches() const;
+};
+
+/// Collects the figures of a finished run.
+RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh);
+void PrintSummary(const RunReport& report, std::ostream& out);
+void WriteJson(const RunReport& report, std::ostream& out);
+
+} // namespace labelmesher_cli
+
+#endif

@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/**
+ * @file MeshConformity.cxx
+ * MeasureConformity: is the mesh a simplicial complex with a closed boundary?
+ * (dissertation section 3.2: the mesh is conforming and its boundary is a
+ * closed surface.)
+ *
+ * Passes:
+ *  1. distinct facets, visited from their smallest vertex (MeshIncidence.h):
+ *     count the facets used by more than two cells; keep the facets used by one
+ *     cell (the mesh boundary).
+ *  2. watertightness: sort the edges (3D) / vertices (2D) of the boundary
+ *     facets and count those not used by exactly two boundary facets.
+ *  3. hanging vertices: a uniform grid of the points (about one point per grid
+ *     cell); every distinct edge, and every distinct triangle in 3D, looks at
+ *     the points of the grid cells its bounding box overlaps and flags those
+ *     within Tolerance of it but farther than Tolerance from its vertices and,
+ *     for triangles, from its edges (so "strictly inside"). Nothing relies on
+ *     the points lying on a lattice.
+ */
+
+#include "MeshChecks.h"
+
+#include "Geometry.h"
+#include "MeshIncidence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace labelmesher
+{
+
+namespace
+{
+using namespace geometry;
+using checks_detail::VertexIncidence;
+
+constexpr double Tolerance = 1e-9;
+
+/// Uniform grid of point ids (counting sort into cells).
+class PointGrid
+{
+public:
+  explicit PointGrid(const std::vector<Point3>& points)
+    : Points(points)
+  {
+    Lo = { 0, 0, 0 };
+    Point3 hi = { 0, 0, 0 };
+    if (!points.empty())
+    {
+      Lo = hi = points[0];
+      for (const Point3& p : points)
+        for (int a = 0; a < 3; ++a)
+        {
+          Lo[a] = std::min(Lo[a], p[a]);
+          hi[a] = std::max(hi[a], p[a]);
+        }
+    }
+    // Cell size: about one point per cell over the occupied extent.
+    double volume = 1.0;
+    int dims = 0;
+    double ext[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      ext[a] = hi[a] - Lo[a];
+      if (ext[a] > 0)
+      {
+        volume *= ext[a];
+        ++dims;
+      }
+    }
+    Size = 1.0;
+    if (dims > 0 && !points.empty())
+      Size = std::pow(volume / static_cast<double>(points.size()), 1.0 / dims);
+    if (!(Size > 0) || !std::isfinite(Size))
+      Size = 1.0;
+    for (int a = 0; a < 3; ++a)
+      N[a] = std::max(1, std::min(1 << 20, static_cast<int>(ext[a] / Size) + 1));
+    const std::size_t ncells = static_cast<std::size_t>(N[0]) * N[1] * N[2];
+    Start.assign(ncells + 1, 0);
+    for (const Point3& p : points)
+      ++Start[CellOf(p) + 1];
+    for (std::size_t i = 0; i < ncells; ++i)
+      Start[i + 1] += Start[i];
+    Items.resize(points.size());
+    std::vector<std::size_t> fill(Start.begin(), Start.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      Items[fill[CellOf(points[i])]++] = static_cast<std::int64_t>(i);
+  }
+
+  int Coord(double x, int a) const
+  {
+    const double t = std::floor((x - Lo[a]) / Size);
+    if (!(t > 0))
+      return 0;
+    return t >= N[a] - 1 ? N[a] - 1 : static_cast<int>(t);
+  }
+  std::size_t CellOf(const Point3& p) const
+  {
+    return (static_cast<std::size_t>(Coord(p[2], 2)) * N[1] + Coord(p[1], 1)) * N[0] + Coord(p[0], 0);
+  }
+
+  /// Calls f(pointId) for the points in the grid cells overlapping [lo, hi];
+  /// stops early when f returns false for the "skip this cell" predicate.
+  template <class CellFilter, class F>
+  void ForEachInBox(const Point3& lo, const Point3& hi, CellFilter&& keepCell, F&& f) const
+  {
+    int a0[3], a1[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      a0[a] = Coord(lo[a], a);
+      a1[a] = Coord(hi[a], a);
+    }
+    for (int k = a0[2]; k <= a1[2]; ++k)
+      for (int j = a0[1]; j <= a1[1]; ++j)
+        for (int i = a0[0]; i <= a1[0]; ++i)
+        {
+          const std::size_t cell = (static_cast<std::size_t>(k) * N[1] + j) * N[0] + i;
+          if (Start[cell] == Start[cell + 1])
+            continue;
+          if (!keepCell(i, j, k))
+            continue;
+          for (std::size_t q = Start[cell]; q < Start[cell + 1]; ++q)
+            f(Items[q]);
+        }
+  }
+
+  /// Box of grid cell (i, j, k), used to skip cells far from a triangle's plane.
+  void CellBox(int i, int j, int k, Point3& lo, Point3& hi) const
+  {
+    const int c[3] = { i, j, k };
+    for (int a = 0; a < 3; ++a)
+    {
+      // First and last cells are unbounded (points beyond are clamped into them).
+      lo[a] = c[a] == 0 ? -std::numeric_limits<double>::infinity() : Lo[a] + c[a] * Size;
+      hi[a] = c[a] == N[a] - 1 ? std::numeric_limits<double>::infinity() : Lo[a] + (c[a] + 1) * Size;
+    }
+  }
+
+private:
+  const std::vector<Point3>& Points;
+  Point3 Lo;
+  double Size = 1.0;
+  int N[3] = { 1, 1, 1 };
+  std::vector<std::size_t> Start;
+  std::vector<std::int64_t> Items;
+};
+
+} // namespace
+
+ConformityReport MeasureConformity(const SimplexMesh& mesh)
+{
+  ConformityReport report;
+  const VertexIncidence incidence = checks_detail::BuildVertexIncidence(mesh);
+  const auto& P = mesh.Points;
+  const bool is3D = mesh.Dimension == 3;
+
+  // 1. Facets: over-shared ones, boundary ones; and the triangles for pass 3.
+  std::vector<std::array<std::int64_t, 3>> boundary;
+  std::vector<std::array<std::int64_t, 3>> triangles; // distinct facets in 3D
+  checks_detail::ForEachFacet(mesh, incidence,
+    [&](const std::array<std::int64_t, 3>& facet, const std::uint32_t*, std::size_t count) {
+      if (count > 2)
+        ++report.OverSharedFaces;
+      if (count == 1)
+        boundary.push_back(facet);
+      if (is3D)
+        triangles.push_back(facet);
+    });
+
+  // 2. Watertightness.
+  {
+    std::vector<std::pair<std::int64_t, std::int64_t>> keys;
+    keys.reserve(boundary.size() * 3);
+    for (const auto& f : boundary)
+    {
+      if (is3D)
+      {
+        keys.emplace_back(f[0], f[1]);
+        keys.emplace_back(f[0], f[2]);
+        keys.emplace_back(f[1], f[2]);
+      }
+      else
+      {
+        keys.emplace_back(f[0], -1);
+        keys.emplace_back(f[1], -1);
+      }
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size();)
+    {
+      std::size_t j = i;
+      while (j < keys.size() && keys[j] == keys[i])
+        ++j;
+      if (j - i != 2)
+        ++report.NonManifoldBoundaryEdges;
+      i = j;
+    }
+  }
+
+  // 3. Hanging vertices.
+  if (P.empty())
+    return report;
+  const PointGrid grid(P);
+  std::vector<char> hanging(P.size(), 0);
+  const double tol2 = Tolerance * Tolerance;
+  auto box = [&](std::initializer_list<const Point3*> pts, Point3& lo, Point3& hi) {
+    lo = hi = **pts.begin();
+    for (const Point3* p : pts)
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], (*p)[a] - Tolerance);
+        hi[a] = std::max(hi[a], (*p)[a] + Tolerance);
+      }
+  };
+  auto allCells = [](int, int, int) { return true; };
+  // Points used by no cell are not mesh vertices.
+  auto used = [&](std::int64_t v) { return incidence.Offsets[v] != incidence.Offsets[v + 1]; };
+  checks_detail::ForEachEdge(mesh, incidence, [&](std::int64_t a, std::int64_t b) {
+    const Point3 &pa = P[a], &pb = P[b];
+    Point3 lo, hi;
+    box({ &pa, &pb }, lo, hi);
+    grid.ForEachInBox(lo, hi, allCells, [&](std::int64_t v) {
+      if (v == a || v == b || hanging[v] || !used(v))
+        return;
+      const Point3& p = P[v];
+      if (SquaredDistanceToSegment(p, pa, pb) <= tol2 && Dot(Sub(p, pa), Sub(p, pa)) > tol2 &&
+        Dot(Sub(p, pb), Sub(p, pb)) > tol2)
+        hanging[v] = 1;
+    });
+  });
+  for (const auto& t : triangles)
+  {
+    const Point3 &pa = P[t[0]], &pb = P[t[1]], &pc = P[t[2]];
+    const Point3 n = Cross(Sub(pb, pa), Sub(pc, pa));
+    const double nn = Norm(n);
+    if (nn == 0.0)
+      continue; // degenerate: only its edges can hold a vertex
+    Point3 lo, hi;
+    box({ &pa, &pb, &pc }, lo, hi);
+    // Skip grid cells that the triangle's plane (thickened by Tolerance) misses.
+    auto nearPlane = [&](int i, int j, int k) {
+      Point3 clo, chi;
+      grid.CellBox(i, j, k, clo, chi);
+      for (int q = 0; q < 3; ++q)
+      {
+        clo[q] = std::max(clo[q], lo[q]);
+        chi[q] = std::min(chi[q], hi[q]);
+      }
+      double smin = 0, smax = 0;
+      for (int q = 0; q < 3; ++q)
+      {
+        const double u = n[q] * (clo[q] - pa[q]), w = n[q] * (chi[q] - pa[q]);
+        smin += std::min(u, w);
+        smax += std::max(u, w);
+      }
+      return smin <= Tolerance * nn && smax >= -Tolerance * nn;
+    };
+    grid.ForEachInBox(lo, hi, nearPlane, [&](std::int64_t v) {
+      if (v == t[0] || v == t[1] || v == t[2] || hanging[v] || !used(v))
+        return;
+      const Point3& p = P[v];
+      if (SquaredDistanceToTriangle(p, pa, pb, pc) <= tol2 &&
+        SquaredDistanceToSegment(p, pa, pb) > tol2 && SquaredDistanceToSegment(p, pb, pc) > tol2 &&
+        SquaredDistanceToSegment(p, pc, pa) > tol2)
+        hanging[v] = 1;
+    });
+  }
+  report.HangingVertices =
+    static_cast<std::size_t>(std::count(hanging.begin(), hanging.end(), char(1)));
+  return report;
+}
+
+} // namespace labelmesher

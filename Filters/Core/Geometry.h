@@ -86,6 +86,33 @@ inline double SquaredDistanceToBox(const Point3& p, const Point3& lo, const Poin
   return s;
 }
 
+/// Smallest of the six dihedral angles of tetrahedron (a, b, c, d), in degrees.
+inline double MinimumDihedralAngle(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
+{
+  const Point3 p[4] = { a, b, c, d };
+  // Face normals (outward up to a common sign); the dihedral angle at edge
+  // (i, j) is pi minus the angle between the normals of the faces opposite k, l.
+  Point3 n[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const Point3& q0 = p[(i + 1) % 4];
+    const Point3& q1 = p[(i + 2) % 4];
+    const Point3& q2 = p[(i + 3) % 4];
+    n[i] = Cross(Sub(q1, q0), Sub(q2, q0));
+    if (Dot(n[i], Sub(p[i], q0)) > 0)
+      n[i] = Scale(n[i], -1.0); // point away from the opposite vertex
+  }
+  double smallest = 180.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+    {
+      const double cosine = -Dot(n[i], n[j]) / (Norm(n[i]) * Norm(n[j]));
+      const double angle = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+      smallest = std::min(smallest, angle);
+    }
+  return smallest;
+}
+
 } // namespace geometry
 } // namespace labelmesher
 

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "DistanceBound.h"
+
+#include "Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace labelmesher
+{
+namespace
+{
+using namespace geometry;
+constexpr double kRoundOff = 1e-9;
+
+double DistanceTo(const Point3& p, const ConvexPiece& piece)
+{
+  double d2 = 0.0;
+  switch (piece.Count)
+  {
+    case 2:
+      d2 = SquaredDistanceToSegment(p, piece.Points[0], piece.Points[1]);
+      break;
+    case 3:
+      d2 = SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]);
+      break;
+    default:
+      d2 = std::min(SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]),
+        SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[2], piece.Points[3]));
+  }
+  return std::sqrt(d2);
+}
+
+/// The axis along which all points of `piece` share one coordinate, or -1.
+int FlatAxis(const ConvexPiece& piece, int dimension)
+{
+  for (int a = 0; a < dimension; ++a)
+  {
+    bool flat = true;
+    for (int i = 1; i < piece.Count; ++i)
+      flat = flat && std::abs(piece.Points[i][a] - piece.Points[0][a]) < kRoundOff;
+    if (flat)
+      return a;
+  }
+  return -1;
+}
+
+using Polygon2 = std::vector<std::array<double, 2>>;
+
+double Area(const Polygon2& p)
+{
+  double a = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+  {
+    const auto& u = p[i];
+    const auto& v = p[(i + 1) % p.size()];
+    a += u[0] * v[1] - u[1] * v[0];
+  }
+  return 0.5 * a;
+}
+
+/// Sutherland-Hodgman: `subject` clipped by the convex counter-clockwise `clip`.
+Polygon2 Clip(Polygon2 subject, const Polygon2& clip)
+{
+  for (std::size_t e = 0; e < clip.size() && !subject.empty(); ++e)
+  {
+    const auto& a = clip[e];
+    const auto& b = clip[(e + 1) % clip.size()];
+    auto side = [&](const std::array<double, 2>& p) {
+      return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    };
+    Polygon2 out;
+    for (std::size_t i = 0; i < subject.size(); ++i)
+    {
+      const auto& p = subject[i];
+      const auto& q = subject[(i + 1) % subject.size()];
+      const double sp = side(p), sq = side(q);
+      if (sp >= 0)
+        out.push_back(p);
+      if ((sp >= 0) != (sq >= 0))
+      {
+        const double t = sp / (sp - sq);
+        out.push_back({ p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) });
+      }
+    }
+    subject = std::move(out);
+  }
+  return subject;
+}
+
+Polygon2 Project(const ConvexPiece& piece, int axis)
+{
+  const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+  Polygon2 p;
+  for (int i = 0; i < piece.Count; ++i)
+    p.push_back({ piece.Points[i][u], piece.Points[i][v] });
+  if (Area(p) < 0)
+    std::reverse(p.begin(), p.end());
+  return p;
+}
+
+/// The element lies in an axis-aligned plane (3D) and coplanar pieces, which
+/// do not overlap, cover it: its distance to them is 0.
+bool CoveredExactly(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces)
+{
+  const int axis = element.Count >= 3 ? FlatAxis(element, 3) : -1;
+  if (axis < 0)
+    return false;
+  const Polygon2 subject = Project(element, axis);
+  const double target = Area(subject);
+  double covered = 0.0;
+  for (const ConvexPiece& piece : pieces)
+  {
+    if (piece.Count < 3 || FlatAxis(piece, 3) != axis ||
+      std::abs(piece.Points[0][axis] - element.Points[0][axis]) > kRoundOff)
+      continue;
+    const Polygon2 overlap = Clip(subject, Project(piece, axis));
+    if (overlap.size() >= 3)
+      covered += std::abs(Area(overlap));
+  }
+  return covered >= target * (1.0 - 1e-12) - 1e-15;
+}
+
+/// 2D analogue: a segment on a line that collinear segments cover.
+bool CoveredExactlyOnLine(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces)
+{
+  if (element.Count != 2)
+    return false;
+  for (int along = 0; along < 2; ++along)
+  {
+    const int across = 1 - along;
+    if (std::abs(element.Points[0][across] - element.Points[1][across]) > kRoundOff)
+      continue;
+    const double lo = std::min(element.Points[0][along], element.Points[1][along]);
+    const double hi = std::max(element.Points[0][along], element.Points[1][along]);
+    double covered = 0.0;
+    for (const ConvexPiece& piece : pieces)
+    {
+      if (piece.Count != 2 || std::abs(piece.Points[0][across] - element.Points[0][across]) > kRoundOff ||
+        std::abs(piece.Points[1][across] - element.Points[0][across]) > kRoundOff)
+        continue;
+      const double a = std::max(lo, std::min(piece.Points[0][along], piece.Points[1][along]));
+      const double b = std::min(hi, std::max(piece.Points[0][along], piece.Points[1][along]));
+      covered += std::max(0.0, b - a);
+    }
+    return covered >= (hi - lo) * (1.0 - 1e-12) - 1e-15;
+  }
+  return false;
+}
+
+std::vector<ConvexPiece> Subdivide(const ConvexPiece& e)
+{
+  auto mid = [](const Point3& a, const Point3& b) { return Scale(Add(a, b), 0.5); };
+  const Point3* p = e.Points;
+  switch (e.Count)
+  {
+    case 2:
+    {
+      const Point3 m = mid(p[0], p[1]);
+      return { ConvexPiece{ 2, { p[0], m } }, ConvexPiece{ 2, { m, p[1] } } };
+    }
+    case 3:
+    {
+      const Point3 a = mid(p[0], p[1]), b = mid(p[1], p[2]), c = mid(p[2], p[0]);
+      return { ConvexPiece{ 3, { p[0], a, c } }, ConvexPiece{ 3, { a, p[1], b } }, ConvexPiece{ 3, { c, b, p[2] } },
+        ConvexPiece{ 3, { a, b, c } } };
+    }
+    default:
+    {
+      const Point3 a = mid(p[0], p[1]), b = mid(p[1], p[2]), c = mid(p[2], p[3]), d = mid(p[3], p[0]);
+      const Point3 o = mid(a, c);
+      return { ConvexPiece{ 4, { p[0], a, o, d } }, ConvexPiece{ 4, { a, p[1], b, o } },
+        ConvexPiece{ 4, { o, b, p[2], c } }, ConvexPiece{ 4, { d, o, c, p[3] } } };
+    }
+  }
+}
+
+bool Within(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h, int depth)
+{
+  double worstVertex = 0.0;
+  for (int i = 0; i < element.Count; ++i)
+  {
+    double best = INFINITY;
+    for (const ConvexPiece& piece : pieces)
+      best = std::min(best, DistanceTo(element.Points[i], piece));
+    worstVertex = std::max(worstVertex, best);
+  }
+  if (worstVertex > h + kRoundOff)
+    return false;
+  for (const ConvexPiece& piece : pieces)
+  {
+    double farthest = 0.0;
+    for (int i = 0; i < element.Count && farthest <= h + kRoundOff; ++i)
+      farthest = std::max(farthest, DistanceTo(element.Points[i], piece));
+    if (farthest <= h + kRoundOff)
+      return true;
+  }
+  if (worstVertex < kRoundOff && (CoveredExactly(element, pieces) || CoveredExactlyOnLine(element, pieces)))
+    return true;
+  if (depth == 0)
+    return false;
+  for (const ConvexPiece& child : Subdivide(element))
+    if (!Within(child, pieces, h, depth - 1))
+      return false;
+  return true;
+}
+
+} // namespace
+
+bool WithinDistance(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h, int maxDepth)
+{
+  if (pieces.empty())
+    return false;
+  return Within(element, pieces, h, maxDepth);
+}
+
+} // namespace labelmesher

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "LeafFill.h"
+
+#include "FaceTriangulation.h"
+#include "LeafSurfacePatch.h"
+
+#include <stdexcept>
+
+namespace labelmesher
+{
+namespace
+{
+
+/// Doubled-lattice point of the leaf at `half` steps (halves of the leaf side).
+LatticePoint LeafLattice(const LeafBox& leaf, int hx, int hy, int hz)
+{
+  const std::int64_t s = leaf.Size;
+  return { leaf.Low(0) + hx * s, leaf.Low(1) + hy * s, leaf.Low(2) + hz * s };
+}
+
+std::int32_t LabelOf(const OctreeLeaf& leaf, unsigned cornerBits, int corner)
+{
+  return ((cornerBits >> corner) & 1u) ? leaf.Second : leaf.First;
+}
+
+void FillSquare(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
+{
+  const LeafBox& box = leaf.Box;
+  auto corner = [&](int c) { return LeafLattice(box, 2 * (c & 1), 2 * ((c >> 1) & 1), 0); };
+  const bool proper = leaf.IsProper();
+  auto hasMidpoint = [&](int face) {
+    const int axis = face / 2, side = face % 2, other = 1 - axis;
+    const int c0 = side << axis, c1 = c0 | (1 << other);
+    const bool crossed = proper && ((cornerBits >> c0) & 1u) != ((cornerBits >> c1) & 1u);
+    return crossed || ((leaf.EdgeMidpoints >> face) & 1u);
+  };
+  bool any = false;
+  for (int f = 0; f < 4; ++f)
+    any = any || hasMidpoint(f);
+  if (!any && !proper)
+  {
+    mesh.AddCell({ corner(0), corner(1), corner(3), {} }, leaf.First);
+    mesh.AddCell({ corner(0), corner(3), corner(2), {} }, leaf.First);
+    return;
+  }
+  // Counter-clockwise ring: corners and the midpoints of sides y=0, x=1, y=1, x=0.
+  struct RingPoint
+  {
+    LatticePoint Point;
+    int Corner;
+  };
+  std::vector<RingPoint> ring;
+  const int ringCorners[4] = { 0, 1, 3, 2 }, ringFaces[4] = { 2, 1, 3, 0 };
+  const int midpointHalves[4][2] = { { 1, 0 }, { 2, 1 }, { 1, 2 }, { 0, 1 } };
+  for (int i = 0; i < 4; ++i)
+  {
+    ring.push_back({ corner(ringCorners[i]), ringCorners[i] });
+    if (hasMidpoint(ringFaces[i]))
+      ring.push_back({ LeafLattice(box, midpointHalves[i][0], midpointHalves[i][1], 0), -1 });
+  }
+  const LatticePoint centre = LeafLattice(box, 1, 1, 0);
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const RingPoint& p = ring[i];
+    const RingPoint& q = ring[(i + 1) % ring.size()];
+    const int c = p.Corner >= 0 ? p.Corner : q.Corner;
+    mesh.AddCell({ centre, p.Point, q.Point, {} }, proper ? LabelOf(leaf, cornerBits, c) : leaf.First);
+  }
+}
+
+void FillCube(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
+{
+  const LeafBox& box = leaf.Box;
+  const bool proper = leaf.IsProper();
+  if (!proper && leaf.EdgeMidpoints == 0 && leaf.SplitFaces == 0)
+  {
+    // Six tetrahedra around the diagonal from corner 0 to corner 7 (Kuhn).
+    auto corner = [&](int c) { return LeafLattice(box, 2 * (c & 1), 2 * ((c >> 1) & 1), 2 * ((c >> 2) & 1)); };
+    const int permutations[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+    for (const auto& p : permutations)
+    {
+      const int a = 1 << p[0], ab = a | (1 << p[1]);
+      mesh.AddCell({ corner(0), corner(a), corner(ab), corner(7) }, leaf.First);
+    }
+    return;
+  }
+  const LatticePoint centre = LeafLattice(box, 1, 1, 1);
+  for (int face = 0; face < 6; ++face)
+  {
+    const int axis = face / 2, side = face % 2;
+    const auto others = OtherAxes(axis);
+    auto cubeCorner = [&](int q) { return (side << axis) | ((q & 1) << others[0]) | ((q >> 1) << others[1]); };
+    // Face edges 0..3 (b = 0, a = 4, b = 4, a = 0) as cube edges.
+    unsigned midpointMask = 0;
+    for (int e = 0; e < 4; ++e)
+    {
+      std::array<int, 3> bits{ 0, 0, 0 };
+      bits[axis] = side;
+      const int along = (e % 2 == 0) ? others[0] : others[1];
+      const int fixedAxis = (e % 2 == 0) ? others[1] : others[0];
+      bits[fixedAxis] = (e == 1 || e == 2) ? 1 : 0;
+      if ((leaf.EdgeMidpoints >> CubeEdgeThrough(along, bits)) & 1u)
+        midpointMask |= 1u << e;
+    }
+    const bool split = (leaf.SplitFaces >> face) & 1u;
+    unsigned faceBits = 0;
+    for (int q = 0; q < 4; ++q)
+      faceBits |= ((cornerBits >> cubeCorner(q)) & 1u) << q;
+
+    FaceKind kind = split ? FaceKind::Split : (midpointMask ? FaceKind::Fan : FaceKind::Plain);
+    if (proper && faceBits != 0 && faceBits != 15)
+      kind = FaceKind::Crossed;
+    if (proper && (split || midpointMask))
+      throw std::logic_error("a proper boundary leaf meets a finer leaf; the octree rules exclude this");
+    const std::int64_t extent = box.Extent();
+    for (const FaceTriangle& t : TriangulateFace(kind, midpointMask, faceBits))
+    {
+      std::array<LatticePoint, 4> cell;
+      for (int i = 0; i < 3; ++i)
+      {
+        LatticePoint p;
+        p[axis] = box.Low(axis) + side * extent;
+        p[others[0]] = box.Low(others[0]) + t.Points[i].A * extent / 4;
+        p[others[1]] = box.Low(others[1]) + t.Points[i].B * extent / 4;
+        cell[i] = p;
+      }
+      cell[3] = centre;
+      mesh.AddCell(cell, proper ? LabelOf(leaf, cornerBits, cubeCorner(t.SideCorner)) : leaf.First);
+    }
+  }
+}
+
+} // namespace
+
+void FillLeaf(const LabelImage& image, const OctreeLeaf& leaf, MeshAssembler& mesh)
+{
+  const unsigned cornerBits = leaf.IsProper() ? CornerLabelBits(image, leaf.Box, leaf.Second) : 0u;
+  if (leaf.Box.Dimension == 2)
+    FillSquare(leaf, cornerBits, mesh);
+  else
+    FillCube(leaf, cornerBits, mesh);
+}
+
+} // namespace labelmesher

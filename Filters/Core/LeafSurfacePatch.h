@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_LeafSurfacePatch_h
+#define labelmesher_LeafSurfacePatch_h
+
+/**
+ * @file LeafSurfacePatch.h
+ * The surface patch S_L of a proper boundary leaf (section 3.1.1, "Waterproof
+ * surface mesh"): intersection vertices at the midpoints of leaf edges whose
+ * ends carry different labels, one intersection edge per crossed face, and the
+ * cone from the leaf centre over the resulting intersection polygon. Also the
+ * image boundary B_L inside the leaf, and the fidelity test that compares them
+ * (both one-sided Hausdorff bounds, evaluated exactly; see DistanceBound.h).
+ *
+ * Coordinates are index-space (voxel centres at integers).
+ */
+
+#include "DistanceBound.h"
+#include "LabelImage.h"
+#include "LeafBox.h"
+
+#include <vector>
+
+namespace labelmesher
+{
+
+/// Corner c of the leaf carries the second label (bit c set) or the first.
+unsigned CornerLabelBits(const LabelImage& image, const LeafBox& leaf, std::int32_t second);
+
+/// The cone patch: triangles (3D) or segments (2D); empty if the intersection
+/// edges do not form exactly one closed polygon (3D) or one pair of points (2D).
+std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, unsigned cornerBits);
+
+/// The voxel faces (pixel edges in 2D) between the two labels inside the leaf.
+std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf);
+
+/// h(B_L, S_L) <= imageToMesh and h(S_L, B_L) <= meshToImage.
+bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t second, double imageToMesh,
+  double meshToImage);
+
+} // namespace labelmesher
+
+#endif

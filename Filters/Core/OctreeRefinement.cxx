@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "OctreeRefinement.h"
+
+#include <mpi.h>
+#include <p4est_base.h>
+#include <sc.h>
+
+#include <cstdlib>
+#include <mutex>
+
+namespace labelmesher
+{
+namespace detail
+{
+
+void EnsureMPIInitialized()
+{
+  // A plain process may call MPI_Init itself (a singleton start, about 0.3 s
+  // once); under mpirun or pvbatch MPI is already up and is left alone.
+  static std::once_flag once;
+  std::call_once(once, [] {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized)
+    {
+      MPI_Init(nullptr, nullptr);
+      std::atexit([] {
+        int finalized = 0;
+        MPI_Finalized(&finalized);
+        if (!finalized)
+          MPI_Finalize();
+      });
+    }
+    sc_init(sc_MPI_COMM_SELF, 0, 0, nullptr, SC_LP_ERROR);
+    p4est_init(nullptr, SC_LP_ERROR);
+  });
+}
+
+} // namespace detail
+
+std::vector<OctreeLeaf> BuildOctree(int dimension, int depth, const LeafEvaluator& evaluate,
+  const ProgressObserver& observer, double progressStart, double progressEnd)
+{
+  return dimension == 2 ? detail::BuildForest2(depth, evaluate, observer, progressStart, progressEnd)
+                        : detail::BuildForest3(depth, evaluate, observer, progressStart, progressEnd);
+}
+
+} // namespace labelmesher

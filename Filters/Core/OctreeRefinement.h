@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_OctreeRefinement_h
+#define labelmesher_OctreeRefinement_h
+
+/**
+ * @file OctreeRefinement.h
+ * Octree O2 of Algorithm 2 on a p4est forest (one tree, the unit cube, mapped
+ * onto a 2^depth voxel cube whose voxel (0,0,0) is the image's first voxel).
+ *
+ * A leaf is split while the caller's evaluator says so (more than two labels,
+ * single manifold condition, fidelity), the forest is kept 2:1 balanced across
+ * faces and edges (p4est_balance, P8EST_CONNECT_EDGE; faces in 2D), and a leaf
+ * is split when it is larger than a face- or edge-neighbour while either of
+ * them is a proper boundary leaf: proper boundary leaves then meet only leaves
+ * of their own size across every face and edge they share, so intersection
+ * vertices never become quarter points of a larger leaf (the configuration
+ * that breaks the 19.47 degree claim, see reference/NOTES.md). Refinement and
+ * balance alternate until nothing changes; it ends because single voxels are
+ * never split.
+ */
+
+#include "LeafBox.h"
+#include "ProgressObserver.h"
+
+#include <functional>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct LeafVerdict
+{
+  bool Refine = false;
+  std::int32_t First = 0, Second = 0; ///< labels held, when not refined
+};
+using LeafEvaluator = std::function<LeafVerdict(const LeafBox&)>;
+
+/// Builds the octree (dimension 3) or quadtree (dimension 2) over a cube of
+/// 2^depth voxels a side and returns its leaves, with the midpoints and split
+/// faces their finer neighbours impose.
+std::vector<OctreeLeaf> BuildOctree(int dimension, int depth, const LeafEvaluator& evaluate,
+  const ProgressObserver& observer, double progressStart, double progressEnd);
+
+namespace detail
+{
+std::vector<OctreeLeaf> BuildForest2(int depth, const LeafEvaluator&, const ProgressObserver&, double, double);
+std::vector<OctreeLeaf> BuildForest3(int depth, const LeafEvaluator&, const ProgressObserver&, double, double);
+void EnsureMPIInitialized();
+}
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The quadtree (p4est) instance of the forest code; see OctreeRefinementForest.h.
+#include <p4est_extended.h>
+#include <p4est_iterate.h>
+
+#include <memory>
+#include <string>
+
+#include "OctreeRefinementForest.h"
+
+namespace labelmesher
+{
+namespace detail
+{
+std::vector<OctreeLeaf> BuildForest2(
+  int depth, const LeafEvaluator& evaluate, const ProgressObserver& observer, double start, double end)
+{
+  return BuildForest(depth, evaluate, observer, start, end);
+}
+} // namespace detail
+} // namespace labelmesher

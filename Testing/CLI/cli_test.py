@@ -1,0 +1,256 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Command-line tests of labelmesher, one case per ctest test:
+
+    python3 cli_test.py <path/to/labelmesher> <work dir> <case>
+
+Bad input must give a non-zero exit status and exactly one line on stderr that
+names the problem; good input must give a readable mesh and a JSON report whose
+figures agree with the mesh."""
+
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.vtkCommonDataModel import VTK_TETRA, VTK_TRIANGLE, vtkImageData
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+EXE, WORK, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+ANGLE_BOUND = math.degrees(math.asin(1.0 / 3.0))
+REPORT_KEYS = {"input", "output", "image", "parameters", "mesh", "measured", "quality",
+               "fidelity", "topology", "timings", "total_seconds"}
+
+
+def path(name):
+    return os.path.join(WORK, CASE + "_" + name)
+
+
+def run(*args):
+    return subprocess.run([EXE, *args], capture_output=True, text=True, timeout=540)
+
+
+def write_nrrd(name, labels, nrrd_type, spacing=(1, 1, 1), truncate=0, extra=""):
+    """Raw NRRD of a [z, y, x] array (written by hand: no writer can be trusted
+    to produce the broken files we need)."""
+    data = np.ascontiguousarray(labels).tobytes()
+    if truncate:
+        data = data[: len(data) - truncate]
+    nz, ny, nx = labels.shape
+    header = (
+        "NRRD0004\n"
+        f"type: {nrrd_type}\n"
+        "dimension: 3\n"
+        "space dimension: 3\n"
+        f"sizes: {nx} {ny} {nz}\n"
+        f"space directions: ({spacing[0]},0,0) (0,{spacing[1]},0) (0,0,{spacing[2]})\n"
+        "space origin: (0,0,0)\n"
+        "endian: little\n"
+        "encoding: raw\n" + extra + "\n"
+    )
+    with open(path(name), "wb") as f:
+        f.write(header.encode("ascii") + data)
+    return path(name)
+
+
+def write_mha(name, labels, spacing):
+    nz, ny, nx = labels.shape
+    header = (
+        "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
+        "CompressedData = False\n"
+        f"ElementSpacing = {spacing[0]} {spacing[1]} {spacing[2]}\n"
+        f"DimSize = {nx} {ny} {nz}\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n"
+    )
+    with open(path(name), "wb") as f:
+        f.write(header.encode("ascii") + np.ascontiguousarray(labels.astype(np.uint8)).tobytes())
+    return path(name)
+
+
+def write_png(name, pixels):
+    """pixels: [y, x] or [y, x, channels] uint8."""
+    pixels = np.asarray(pixels, dtype=np.uint8)
+    channels = 1 if pixels.ndim == 2 else pixels.shape[2]
+    image = vtkImageData()
+    image.SetDimensions(pixels.shape[1], pixels.shape[0], 1)
+    array = numpy_to_vtk(pixels.reshape(-1, channels), deep=True)
+    image.GetPointData().SetScalars(array)
+    writer = vtkPNGWriter()
+    writer.SetFileName(path(name))
+    writer.SetInputData(image)
+    writer.Write()
+    return path(name)
+
+
+def ball(n, radius, label=1):
+    c = (n - 1) / 2.0
+    z, y, x = np.mgrid[0:n, 0:n, 0:n]
+    return np.where((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2 <= radius ** 2, label, 0)
+
+
+def expect_failure(result, fragment, status=1):
+    err = result.stderr.strip()
+    assert result.returncode == status, f"exit status {result.returncode}, expected {status}: {err!r}"
+    assert err and "\n" not in err, f"expected one line on stderr, got {result.stderr!r}"
+    assert err.startswith("labelmesher:"), err
+    assert fragment.lower() in err.lower(), f"{fragment!r} not in {err!r}"
+    print("OK:", err)
+
+
+def read_mesh(filename):
+    reader = vtkXMLUnstructuredGridReader() if filename.endswith(".vtu") else vtkUnstructuredGridReader()
+    reader.SetFileName(filename)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def check_mesh_and_report(mesh_file, report_file, cell_type, labels):
+    grid = read_mesh(mesh_file)
+    assert grid.GetNumberOfCells() > 0, "empty mesh"
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    assert np.all(types == cell_type), set(types)
+    material = vtk_to_numpy(grid.GetCellData().GetArray("Material"))
+    assert set(np.unique(material)) == set(labels), (set(np.unique(material)), labels)
+    with open(report_file) as f:
+        report = json.load(f)
+    missing = REPORT_KEYS - set(report)
+    assert not missing, f"report lacks {missing}"
+    assert report["mesh"]["cells"] == grid.GetNumberOfCells()
+    assert report["mesh"]["points"] == grid.GetNumberOfPoints()
+    per_material = {int(k): v for k, v in report["mesh"]["cells_per_material"].items()}
+    expected = {int(m): int(np.count_nonzero(material == m)) for m in np.unique(material)}
+    assert per_material == expected, (per_material, expected)
+    stages = [t["stage"] for t in report["timings"]]
+    assert stages[0] == "read" and stages[-1] == "write", stages
+    assert all(t["seconds"] >= 0 for t in report["timings"])
+    if report["measured"]:
+        assert report["quality"]["minimum_angle_degrees"] >= ANGLE_BOUND - 1e-6, report["quality"]
+        assert report["quality"]["inverted_cells"] == 0
+        assert {e["material"] for e in report["topology"]["materials"]} >= set(labels) - {0}
+        for key in ("image_to_mesh", "mesh_to_image"):
+            assert report["fidelity"][key] is not None
+    print("OK:", grid.GetNumberOfCells(), "cells", per_material)
+    return grid, report
+
+
+def case_missing_file():
+    expect_failure(run("mesh", path("nothing.nrrd"), "-o", path("out.vtu")), "no such file")
+
+
+def case_rgb_png():
+    rgb = np.zeros((8, 8, 3), dtype=np.uint8)
+    rgb[2:6, 2:6] = (255, 0, 0)
+    expect_failure(run("mesh", write_png("rgb.png", rgb), "-o", path("out.vtu")), "RGB")
+
+
+def case_float_image():
+    labels = ball(8, 2.5).astype(np.float32)
+    labels[4, 4, 4] = 1.5
+    expect_failure(run("mesh", write_nrrd("float.nrrd", labels, "float"), "-o", path("out.vtu")),
+                   "non-integer value 1.5")
+
+
+def case_nan_image():
+    labels = ball(8, 2.5).astype(np.float64)
+    labels[0, 0, 1] = np.nan
+    expect_failure(run("mesh", write_nrrd("nan.nrrd", labels, "double"), "-o", path("out.vtu")),
+                   "NaN")
+
+
+def case_negative_label():
+    labels = ball(8, 2.5).astype(np.int16)
+    labels[0, 0, 0] = -2
+    expect_failure(run("mesh", write_nrrd("negative.nrrd", labels, "short"), "-o", path("out.vtu")),
+                   "negative label -2")
+
+
+def case_empty_image():
+    labels = np.zeros((6, 6, 6), dtype=np.uint8)
+    expect_failure(run("mesh", write_nrrd("empty.nrrd", labels, "uchar"), "-o", path("out.vtu")),
+                   "no foreground")
+
+
+def case_truncated_raw():
+    labels = ball(10, 3.5).astype(np.uint8)
+    expect_failure(run("mesh", write_nrrd("truncated.nrrd", labels, "uchar", truncate=300),
+                       "-o", path("out.vtu")), "truncated")
+
+
+def case_negative_spacing():
+    # ITK reads a negative spacing as a positive one with the axis direction
+    # flipped: the same physical positions. The mesh must land there (at
+    # negative y) with positively oriented tetrahedra.
+    labels = np.zeros((8, 8, 8), dtype=np.uint8)
+    labels[2:6, 2:6, 2:6] = 1  # voxel faces at index 1.5 .. 5.5 on every axis
+    image = write_mha("negative_spacing.mha", labels, (1, -1, 1))
+    result = run("mesh", image, "-o", path("mesh.vtu"), "--report", path("report.json"))
+    assert result.returncode == 0, result.stderr
+    grid, _ = check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TETRA, {1})
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
+    slack = 2.0 + 1e-9
+    assert points[:, 1].max() <= -1.5 + slack and points[:, 1].min() >= -5.5 - slack, points[:, 1]
+    assert points[:, 0].min() >= 1.5 - slack and points[:, 0].max() <= 5.5 + slack
+    tets = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 4)
+    p = points[tets]
+    volumes = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+    assert np.all(volumes > 0), "tetrahedra must stay positively oriented under a reflection"
+
+
+def case_bad_option():
+    expect_failure(run("mesh", "in.nrrd", "-o", path("out.vtu"), "--hausdorff", "-1"),
+                   "non-negative", status=2)
+    expect_failure(run("mesh", "in.nrrd", "-o", path("out.stl")), ".vtu or .vtk", status=2)
+    expect_failure(run("mesh", "in.nrrd"), "missing -o", status=2)
+
+
+def case_good_3d():
+    labels = (ball(14, 5.5, 1) + ball(14, 2.5, 1)).astype(np.uint8)  # 2 inside 1
+    image = write_nrrd("two_labels.nrrd", labels, "uchar", spacing=(0.5, 0.5, 0.5))
+    result = run("mesh", image, "-o", path("mesh.vtu"), "--report", path("report.json"),
+                 "--image-to-mesh", "1.5", "--mesh-to-image", "2")
+    assert result.returncode == 0, result.stderr
+    assert "Minimum" in result.stdout or "not measured" in result.stdout, result.stdout
+    grid, report = check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TETRA, {1, 2})
+    assert report["parameters"]["image_to_mesh"] == 1.5
+    assert report["parameters"]["mesh_to_image"] == 2.0
+    assert report["parameters"]["distance_unit"] == 0.5
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    # physical coordinates: voxel faces span [-0.25, 6.75]; allow the 2-voxel bound
+    assert points.min() >= -0.25 - 1.0 - 1e-9 and points.max() <= 6.75 + 1.0 + 1e-9, (points.min(), points.max())
+
+
+def case_good_2d_png():
+    disk = np.zeros((20, 24), dtype=np.uint8)
+    y, x = np.mgrid[0:20, 0:24]
+    disk[(x - 11.5) ** 2 + (y - 9.5) ** 2 <= 49] = 3
+    result = run("mesh", write_png("disk.png", disk), "-o", path("mesh.vtu"),
+                 "--report", path("report.json"))
+    assert result.returncode == 0, result.stderr
+    grid, report = check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TRIANGLE, {3})
+    assert report["mesh"]["dimension"] == 2
+    assert np.allclose(vtk_to_numpy(grid.GetPoints().GetData())[:, 2], 0.0)
+
+
+def case_good_legacy_vtk():
+    image = write_nrrd("ball.nrrd", ball(10, 3.5).astype(np.uint8), "uchar")
+    result = run("mesh", image, "-o", path("mesh.vtk"), "--report", path("report.json"),
+                 "--include-background", "--hausdorff", "2")
+    assert result.returncode == 0, result.stderr
+    check_mesh_and_report(path("mesh.vtk"), path("report.json"), VTK_TETRA, {0, 1})
+
+
+def case_quiet():
+    image = write_nrrd("ball.nrrd", ball(10, 3.5).astype(np.uint8), "uchar")
+    result = run("mesh", image, "-o", path("mesh.vtu"), "--quiet")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == "" and result.stderr == "", (result.stdout, result.stderr)
+    assert read_mesh(path("mesh.vtu")).GetNumberOfCells() > 0
+    print("OK: quiet")
+
+
+if __name__ == "__main__":
+    os.makedirs(WORK, exist_ok=True)
+    globals()["case_" + CASE]()

@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// MeasureHausdorff / WithinHausdorff: one-sided distances between the mesh
+// boundary and the image boundary, overall and per material, checked against
+// values computed by hand (voxel-exact meshes: 0; translated: the shift;
+// a cut voxel: corner distances) and for rigour (just above passes, just below
+// fails).
+#include "MeshChecks.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+using namespace labelmesher;
+
+namespace
+{
+double Det(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
+{
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+    u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+/// Every voxel of the image as a cube split into 6 Kuhn tetrahedra (a pixel
+/// into 2 triangles in 2D), material = label. Background voxels are meshed
+/// only if withBackground. All points are moved by `shift`.
+SimplexMesh VoxelMesh(const LabelImage& image, bool withBackground = false, Point3 shift = { 0, 0, 0 })
+{
+  SimplexMesh m;
+  const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
+  const bool is2D = nz == 1;
+  m.Dimension = is2D ? 2 : 3;
+  const int lz = is2D ? 1 : nz + 1;
+  std::vector<std::int64_t> id(static_cast<std::size_t>(nx + 1) * (ny + 1) * lz, -1);
+  auto point = [&](int i, int j, int k) {
+    std::int64_t& p = id[(static_cast<std::size_t>(k) * (ny + 1) + j) * (nx + 1) + i];
+    if (p < 0)
+    {
+      p = static_cast<std::int64_t>(m.Points.size());
+      m.Points.push_back({ i - 0.5 + shift[0], j - 0.5 + shift[1], is2D ? 0.0 : k - 0.5 + shift[2] });
+    }
+    return p;
+  };
+  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        const std::int32_t l = image.At(i, j, k);
+        if (l == 0 && !withBackground)
+          continue;
+        auto corner = [&](int b) {
+          return point(i + (b & 1), j + ((b >> 1) & 1), is2D ? 0 : k + ((b >> 2) & 1));
+        };
+        if (is2D)
+        {
+          m.Connectivity.insert(
+            m.Connectivity.end(), { corner(0), corner(1), corner(3), corner(0), corner(3), corner(2) });
+          m.Materials.insert(m.Materials.end(), { l, l });
+          continue;
+        }
+        for (const auto& p : perms)
+        {
+          std::int64_t v[4] = { corner(0), corner(1 << p[0]), corner((1 << p[0]) | (1 << p[1])), corner(7) };
+          if (Det(m.Points[v[0]], m.Points[v[1]], m.Points[v[2]], m.Points[v[3]]) < 0)
+            std::swap(v[1], v[2]);
+          m.Connectivity.insert(m.Connectivity.end(), v, v + 4);
+          m.Materials.push_back(l);
+        }
+      }
+  return m;
+}
+
+LabelImage RandomImage(std::mt19937& rng, int nx, int ny, int nz, int labels, int fillPercent)
+{
+  LabelImage image(nx, ny, nz);
+  for (auto& l : image.Labels)
+    l = static_cast<int>(rng() % 100) < fillPercent ? 1 + static_cast<std::int32_t>(rng() % labels) : 0;
+  return image;
+}
+
+constexpr double Tol = 1.0 / 64.0;
+
+/// Measured value v must be an upper bound of `exact` tight to the tolerance.
+void ExpectMeasured(double v, double exact, const char* what)
+{
+  EXPECT_GE(v, exact - 1e-9) << what;
+  EXPECT_LE(v, exact + Tol + 1e-9) << what;
+}
+
+/// WithinHausdorff is true just above the exact values and false just below.
+void ExpectRigorous(const LabelImage& image, const SimplexMesh& mesh, double i2m, double m2i)
+{
+  EXPECT_TRUE(WithinHausdorff(image, mesh, i2m + 1e-4, m2i + 1e-4));
+  if (i2m > 0)
+  {
+    EXPECT_FALSE(WithinHausdorff(image, mesh, i2m - 1e-3, m2i + 1e-4));
+  }
+  if (m2i > 0)
+  {
+    EXPECT_FALSE(WithinHausdorff(image, mesh, i2m + 1e-4, m2i - 1e-3));
+  }
+}
+} // namespace
+
+TEST(HausdorffDistance, VoxelExactMeshesAreAtDistanceZero)
+{
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    const bool is2D = trial % 2 == 0;
+    const LabelImage image = RandomImage(rng, 8, 7, is2D ? 1 : 6, 1 + trial % 3, 45);
+    const SimplexMesh mesh = VoxelMesh(image, trial % 4 < 2);
+    const HausdorffReport r = MeasureHausdorff(image, mesh);
+    EXPECT_EQ(r.Overall.ImageToMesh, 0.0) << trial;
+    EXPECT_EQ(r.Overall.MeshToImage, 0.0) << trial;
+    EXPECT_FALSE(r.PerMaterial.empty());
+    for (const auto& m : r.PerMaterial)
+    {
+      EXPECT_NE(m.first, 0);
+      EXPECT_EQ(m.second.ImageToMesh, 0.0) << trial << " material " << m.first;
+      EXPECT_EQ(m.second.MeshToImage, 0.0) << trial << " material " << m.first;
+    }
+    EXPECT_TRUE(WithinHausdorff(image, mesh, 0.0, 0.0)) << trial;
+  }
+}
+
+TEST(HausdorffDistance, CoarseTrianglesOverFineVoxelFacesAreAtDistanceZero)
+{
+  // A 2x2x2 block meshed as one cube of side 2 in 6 Kuhn tetrahedra: every
+  // mesh boundary triangle spans several voxel faces and conversely.
+  LabelImage image(4, 4, 4);
+  for (int k = 1; k <= 2; ++k)
+    for (int j = 1; j <= 2; ++j)
+      for (int i = 1; i <= 2; ++i)
+        image(i, j, k) = 3;
+  LabelImage coarse(2, 2, 2);
+  coarse(1, 1, 1) = 3;
+  SimplexMesh mesh = VoxelMesh(coarse);
+  for (auto& p : mesh.Points)
+    for (auto& x : p)
+      x = 2 * x - 0.5; // voxel (1,1,1) of the coarse grid, [0.5, 1.5]^3 -> [0.5, 2.5]^3
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  EXPECT_EQ(r.Overall.ImageToMesh, 0.0);
+  EXPECT_EQ(r.Overall.MeshToImage, 0.0);
+  EXPECT_TRUE(WithinHausdorff(image, mesh, 0.0, 0.0));
+  // One voxel less in the image: now both directions are positive.
+  image(1, 1, 1) = 0;
+  EXPECT_FALSE(WithinHausdorff(image, mesh, 0.0, 0.0));
+}
+
+TEST(HausdorffDistance, TranslatedMeshIsAtTheShift)
+{
+  // Moving a voxel-exact mesh by t = 0.3 along x: every point of either
+  // boundary has a point of the other within 0.3 (its translate), and the
+  // centre of an x-facing voxel face is exactly 0.3 from the other boundary
+  // (the nearest other planes are at least 0.5 away). So both one-sided
+  // distances are 0.3, overall and for every material.
+  std::mt19937 rng(99);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    const bool is2D = trial % 2 == 1;
+    const LabelImage image = RandomImage(rng, 7, 6, is2D ? 1 : 5, 2, 50);
+    const SimplexMesh mesh = VoxelMesh(image, false, { 0.3, 0, 0 });
+    const HausdorffReport r = MeasureHausdorff(image, mesh);
+    ExpectMeasured(r.Overall.ImageToMesh, 0.3, "overall I->M");
+    ExpectMeasured(r.Overall.MeshToImage, 0.3, "overall M->I");
+    for (const auto& m : r.PerMaterial)
+    {
+      ExpectMeasured(m.second.ImageToMesh, 0.3, "material I->M");
+      ExpectMeasured(m.second.MeshToImage, 0.3, "material M->I");
+    }
+    ExpectRigorous(image, mesh, 0.3, 0.3);
+  }
+}
+
+TEST(HausdorffDistance, MissingCornerVoxel)
+{
+  // Image: a 4^3 block. Mesh: the block without its corner voxel (0,0,0).
+  // h(I, M) = 1: the image corner (-.5,-.5,-.5) is 1 from the cavity faces and
+  // from the nearest remaining outer faces; h(M, I) = 1: the cavity's inner
+  // corner (.5,.5,.5) is 1 from the image's outer planes.
+  LabelImage image(4, 4, 4);
+  std::fill(image.Labels.begin(), image.Labels.end(), 1);
+  LabelImage meshed = image;
+  meshed(0, 0, 0) = 0;
+  const SimplexMesh mesh = VoxelMesh(meshed);
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  ExpectMeasured(r.Overall.ImageToMesh, 1.0, "I->M");
+  ExpectMeasured(r.Overall.MeshToImage, 1.0, "M->I");
+  ExpectMeasured(r.PerMaterial.at(1).ImageToMesh, 1.0, "material I->M");
+  ExpectRigorous(image, mesh, 1.0, 1.0);
+}
+
+TEST(HausdorffDistance, HalfPixelTriangle2D)
+{
+  // One pixel; the mesh is the lower-left half triangle of it. The pixel
+  // corner (.5,.5) is 1/sqrt(2) from the hypotenuse; the hypotenuse midpoint
+  // (0,0) is 0.5 from the pixel edges (an interior maximum: branch and bound).
+  LabelImage image(1, 1, 1);
+  image(0, 0, 0) = 1;
+  SimplexMesh mesh;
+  mesh.Dimension = 2;
+  mesh.Points = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { -0.5, 0.5, 0 } };
+  mesh.Connectivity = { 0, 1, 2 };
+  mesh.Materials = { 1 };
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  ExpectMeasured(r.Overall.ImageToMesh, std::sqrt(0.5), "I->M");
+  ExpectMeasured(r.Overall.MeshToImage, 0.5, "M->I");
+  ExpectRigorous(image, mesh, std::sqrt(0.5), 0.5);
+}
+
+TEST(HausdorffDistance, CornerTetrahedronInAVoxel)
+{
+  // One voxel; the mesh is its corner tetrahedron at (-.5,-.5,-.5). The far
+  // voxel corner (.5,.5,.5) projects onto the centroid of the slanted face:
+  // h(I, M) = 2/sqrt(3). The slanted face's centroid (-1/6,-1/6,-1/6) is 1/3
+  // from the voxel faces, its largest distance: h(M, I) = 1/3.
+  LabelImage image(1, 1, 1 + 0);
+  image = LabelImage(1, 1, 2);
+  image(0, 0, 0) = 1;
+  SimplexMesh mesh;
+  mesh.Dimension = 3;
+  mesh.Points = { { -0.5, -0.5, -0.5 }, { 0.5, -0.5, -0.5 }, { -0.5, 0.5, -0.5 }, { -0.5, -0.5, 0.5 } };
+  mesh.Connectivity = { 0, 1, 2, 3 };
+  mesh.Materials = { 1 };
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  ExpectMeasured(r.Overall.ImageToMesh, 2 / std::sqrt(3.0), "I->M");
+  ExpectMeasured(r.Overall.MeshToImage, 1.0 / 3.0, "M->I");
+  ExpectRigorous(image, mesh, 2 / std::sqrt(3.0), 1.0 / 3.0);
+}
+
+TEST(HausdorffDistance, PerMaterialAndMissingMaterials)
+{
+  // Two labels side by side; the mesh swaps nothing overall but mislabels
+  // voxel (1,0,0): overall boundaries differ only inside, per material more.
+  LabelImage image(2, 1, 1);
+  image(0, 0, 0) = 1;
+  image(1, 0, 0) = 2;
+  LabelImage wrong = image;
+  wrong(1, 0, 0) = 1;
+  const SimplexMesh mesh = VoxelMesh(wrong);
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  // Overall: the image has the interface x = 0.5 (segment), the mesh does not:
+  // its midpoint (0.5, 0) is 0.5 from the outer boundary.
+  ExpectMeasured(r.Overall.ImageToMesh, 0.5, "overall I->M");
+  EXPECT_EQ(r.Overall.MeshToImage, 0.0);
+  // Material 1 in the mesh is the 2x1 rectangle; in the image the left pixel.
+  ExpectMeasured(r.PerMaterial.at(1).ImageToMesh, 0.5, "material 1 I->M");
+  ExpectMeasured(r.PerMaterial.at(1).MeshToImage, 1.0, "material 1 M->I");
+  // Material 2 has an image boundary but no mesh boundary: infinity.
+  EXPECT_EQ(r.PerMaterial.at(2).ImageToMesh, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.PerMaterial.at(2).MeshToImage, std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(WithinHausdorff(image, mesh, 10.0, 10.0));
+  // Overall alone would pass at (0.5, 0): the per-material check is what fails.
+  EXPECT_TRUE(WithinHausdorff(image, VoxelMesh(image), 0.0, 0.0));
+}
+
+TEST(HausdorffDistance, VoxelExactSphereIsFast)
+{
+  const int n = 64;
+  LabelImage image(n, n, n);
+  const double c = (n - 1) / 2.0, radius = n * 0.4;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if ((i - c) * (i - c) + (j - c) * (j - c) + (k - c) * (k - c) <= radius * radius)
+          image(i, j, k) = 1;
+  const SimplexMesh mesh = VoxelMesh(image);
+  auto t0 = std::chrono::steady_clock::now();
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  const double measure = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.Overall.ImageToMesh, 0.0);
+  EXPECT_EQ(r.Overall.MeshToImage, 0.0);
+  t0 = std::chrono::steady_clock::now();
+  EXPECT_TRUE(WithinHausdorff(image, mesh, 0.0, 0.0));
+  const double within = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Shifted by half a voxel diagonally: distances are at most |shift|.
+  const SimplexMesh shifted = VoxelMesh(image, false, { 0.25, 0.25, 0.0 });
+  t0 = std::chrono::steady_clock::now();
+  const HausdorffReport s = MeasureHausdorff(image, shifted);
+  const double measureShifted = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LE(s.Overall.ImageToMesh, std::sqrt(0.125) + Tol + 1e-9);
+  EXPECT_LE(s.Overall.MeshToImage, std::sqrt(0.125) + Tol + 1e-9);
+  EXPECT_GE(s.Overall.ImageToMesh, 0.25 - 1e-9);
+  std::printf("%d^3 sphere, %zu tets: Measure %.2f s, Within(0, 0) %.2f s, Measure shifted %.2f s "
+              "(%.4f, %.4f)\n",
+    n, mesh.NumberOfCells(), measure, within, measureShifted, s.Overall.ImageToMesh,
+    s.Overall.MeshToImage);
+}

@@ -192,17 +192,21 @@ class OptionsTest(unittest.TestCase):
     def test_anisotropic_spacing_is_resampled_to_the_smallest(self):
         labels = np.zeros((6, 12, 12), dtype=np.int16)
         labels[1:5, 3:9, 3:9] = 1  # a box of 6 x 6 x 4 voxels
-        mesher, errors = run(make_image(labels, spacing=(1.0, 1.0, 2.0)))
+        # Tight bounds (0.5 voxel) so that the mesh must follow the box closely.
+        mesher, errors = run(make_image(labels, spacing=(1.0, 1.0, 2.0)),
+                             ImageToMeshDistance=0.5, MeshToImageDistance=0.5)
         self.assertEqual(errors, [])
         grid = mesher.GetOutput()
         self.assertEqual(grid.GetFieldData().GetArray("VoxelSize").GetValue(0), 1.0)
-        points = vtk_to_numpy(grid.GetPoints().GetData())
+        points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
         _, tets = cells_of(grid)
-        _, volumes = dihedral_angles(points.astype(float), tets)
-        # physical box: x, y in [2.5, 8.5], z in [1.5, 9.5] (voxel faces), volume 288
-        self.assertAlmostEqual(volumes.sum() / 288.0, 1.0, delta=0.25)
-        self.assertGreaterEqual(points[:, 2].min(), 1.5 - 2.0 - 1e-9)
-        self.assertLessEqual(points[:, 2].max(), 9.5 + 2.0 + 1e-9)
+        _, volumes = dihedral_angles(points, tets)
+        # physical box (voxel faces): x, y in [2.5, 8.5]; z voxels 1..4 of size 2,
+        # centred at 2..8, so z in [1, 9]; volume 6 * 6 * 8 = 288
+        self.assertAlmostEqual(volumes.sum() / 288.0, 1.0, delta=0.15)
+        slack = 0.5 + 1e-9
+        np.testing.assert_allclose(points.min(axis=0), [2.5, 2.5, 1.0], atol=slack)
+        np.testing.assert_allclose(points.max(axis=0), [8.5, 8.5, 9.0], atol=slack)
 
     def test_direction_matrix_is_honoured(self):
         # 90 degree rotation about z: index x maps to physical y, index y to -x.

@@ -7,5 +7,5 @@ cd "$here/../.."
 bash "$here/install-dependencies.sh"
 bash "$here/build.sh"
 mkdir -p out
-build/bin/labelmesher mesh Resources/Data/rat_head.nrrd -o out/example.vtu --report out/example.json
+build/bin/labelmesher mesh Resources/Data/totalseg_example_seg.nrrd -o out/example.vtu --report out/example.json
 echo "Wrote out/example.vtu (open it in ParaView or 3D Slicer) and out/example.json"

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+//
+// The guarantees of the initial ORD mesh, asserted on seeded random label
+// images (2-4 labels, touching materials, one-voxel sheets and lines, cavities,
+// tunnels, labels on the image border, speckle; RandomLabelImages.h) with
+// distance bounds drawn from {0, 1, 2, 3}:
+//   - every dihedral (planar) angle is at least the bound the enumeration
+//     proves (TestAngleBoundEnumeration), and no cell is inverted;
+//   - the mesh is conforming and its boundary watertight;
+//   - h(I, M) <= ImageToMeshDistance and h(M, I) <= MeshToImageDistance,
+//     overall and per material (exact test, WithinHausdorff);
+//   - per material, components and Euler characteristic of the meshed region
+//     equal those of the voxel region.
+// The measuring code (Checks/) is independent of the mesher's own tests.
+// A failure prints the seed and what its image contains.
+
+#include "LabelOctreeMesher.h"
+#include "MeshChecks.h"
+#include "RandomLabelImages.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace labelmesher
+{
+namespace
+{
+
+constexpr double kProvenDihedralBound = 35.2643896827; // asin(1/sqrt 3), TestAngleBoundEnumeration
+constexpr double kProvenPlanarBound = 45.0;
+constexpr int kImagesPerShard = 50;
+
+struct Shard
+{
+  int Dimension;
+  int Index;
+};
+
+std::string Explain(const testing::RandomLabelImage& random, const MesherParameters& p)
+{
+  std::ostringstream s;
+  s << "seed " << random.Seed << ", h(I,M) <= " << p.ImageToMeshDistance << ", h(M,I) <= " << p.MeshToImageDistance
+    << "\n"
+    << random.Describe();
+  return s.str();
+}
+
+void CheckGuarantees(std::uint64_t seed, int dimension)
+{
+  const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+  testing::SeededRandom draw(seed ^ 0x9e3779b97f4a7c15ull);
+  MesherParameters parameters;
+  parameters.ImageToMeshDistance = static_cast<double>(draw.Int(0, 3));
+  parameters.MeshToImageDistance = static_cast<double>(draw.Int(0, 3));
+  const std::string context = Explain(random, parameters);
+
+  MesherResult result;
+  ASSERT_NO_THROW(result = MeshLabelImage(random.Image, parameters)) << context;
+  const SimplexMesh& mesh = result.Mesh;
+  ASSERT_GT(mesh.NumberOfCells(), 0u) << context;
+
+  const QualityReport quality = MeasureQuality(mesh);
+  EXPECT_GE(quality.MinimumAngle, (dimension == 3 ? kProvenDihedralBound : kProvenPlanarBound) - 1e-9) << context;
+  EXPECT_EQ(quality.InvertedCells, 0u) << context;
+
+  const ConformityReport conformity = MeasureConformity(mesh);
+  EXPECT_TRUE(conformity.Conforming()) << "over-shared " << conformity.OverSharedFaces << ", hanging "
+                                       << conformity.HangingVertices << ", non-manifold boundary "
+                                       << conformity.NonManifoldBoundaryEdges << "\n"
+                                       << context;
+
+  EXPECT_TRUE(WithinHausdorff(random.Image, mesh, parameters.ImageToMeshDistance, parameters.MeshToImageDistance))
+    << context;
+
+  for (const auto& [label, topology] : CompareTopology(random.Image, mesh))
+    EXPECT_TRUE(topology.Matches()) << "material " << label << ": image " << topology.Image.Components
+                                    << " components, chi " << topology.Image.EulerCharacteristic << "; mesh "
+                                    << topology.Mesh.Components << " components, chi "
+                                    << topology.Mesh.EulerCharacteristic << "\n"
+                                    << context;
+}
+
+class MesherProperties : public ::testing::TestWithParam<Shard>
+{
+};
+
+TEST_P(MesherProperties, AngleConformityHausdorffAndTopologyHold)
+{
+  const Shard shard = GetParam();
+  for (int i = 0; i < kImagesPerShard; ++i)
+  {
+    const std::uint64_t seed = 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * kImagesPerShard + i;
+    CheckGuarantees(seed, shard.Dimension);
+    if (HasFailure())
+      return; // one failing seed is enough to report
+  }
+}
+
+std::vector<Shard> Shards(int dimension, int count)
+{
+  std::vector<Shard> shards;
+  for (int i = 0; i < count; ++i)
+    shards.push_back({ dimension, i });
+  return shards;
+}
+
+// 600 images in 3D and 600 in 2D, in shards of 50 so that ctest runs them in parallel.
+INSTANTIATE_TEST_SUITE_P(ThreeD, MesherProperties, ::testing::ValuesIn(Shards(3, 12)),
+  [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
+INSTANTIATE_TEST_SUITE_P(TwoD, MesherProperties, ::testing::ValuesIn(Shards(2, 12)),
+  [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
+
+} // namespace
+} // namespace labelmesher

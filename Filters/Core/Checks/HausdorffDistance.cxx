@@ -227,14 +227,26 @@ int Subdivide(const Shape& s, Shape* out)
 // Coplanar coverage (exact-zero detection).
 
 using Point2 = std::array<double, 2>;
-using Polygon = std::vector<Point2>;
+
+/// Convex polygon with at most 12 corners (a triangle or square clipped by a
+/// triangle or square has at most 8).
+struct Polygon
+{
+  std::array<Point2, 12> P;
+  int N = 0;
+  void Push(const Point2& p)
+  {
+    if (N < 12)
+      P[N++] = p;
+  }
+};
 
 double SignedArea(const Polygon& p)
 {
   double s = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (int i = 0; i < p.N; ++i)
   {
-    const Point2 &a = p[i], &b = p[(i + 1) % p.size()];
+    const Point2 &a = p.P[i], &b = p.P[(i + 1) % p.N];
     s += a[0] * b[1] - a[1] * b[0];
   }
   return 0.5 * s;
@@ -244,24 +256,24 @@ double SignedArea(const Polygon& p)
 Polygon Clip(const Polygon& subject, const Polygon& clip)
 {
   Polygon out = subject, in;
-  for (std::size_t e = 0; e < clip.size() && !out.empty(); ++e)
+  for (int e = 0; e < clip.N && out.N > 0; ++e)
   {
-    const Point2 &a = clip[e], &b = clip[(e + 1) % clip.size()];
+    const Point2 &a = clip.P[e], &b = clip.P[(e + 1) % clip.N];
     auto side = [&](const Point2& p) {
       return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
     };
-    in.swap(out);
-    out.clear();
-    for (std::size_t i = 0; i < in.size(); ++i)
+    in = out;
+    out.N = 0;
+    for (int i = 0; i < in.N; ++i)
     {
-      const Point2 &p = in[i], &q = in[(i + 1) % in.size()];
+      const Point2 &p = in.P[i], &q = in.P[(i + 1) % in.N];
       const double sp = side(p), sq = side(q);
       if (sp >= 0)
-        out.push_back(p);
+        out.Push(p);
       if ((sp >= 0) != (sq >= 0))
       {
         const double t = sp / (sp - sq);
-        out.push_back({ p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) });
+        out.Push({ p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]) });
       }
     }
   }
@@ -272,11 +284,11 @@ Polygon Project(const Shape& s, int u, int w)
 {
   Point3 c[4];
   const int n = Corners(s, c);
-  Polygon p(n);
+  Polygon p;
   for (int t = 0; t < n; ++t)
-    p[t] = { c[t][u], c[t][w] };
+    p.Push({ c[t][u], c[t][w] });
   if (SignedArea(p) < 0)
-    std::reverse(p.begin(), p.end());
+    std::reverse(p.P.begin(), p.P.begin() + p.N);
   return p;
 }
 
@@ -326,7 +338,8 @@ bool Covered(const Shape& e, const std::vector<Shape>& targets, const std::vecto
   const double area = SignedArea(ep);
   if (!(area > 0))
     return false;
-  std::vector<Polygon> parts;
+  thread_local std::vector<Polygon> parts;
+  parts.clear();
   double sum = 0;
   for (std::uint32_t id : cands)
   {
@@ -334,10 +347,10 @@ bool Covered(const Shape& e, const std::vector<Shape>& targets, const std::vecto
     if (t.Axis != e.Axis || std::abs(t.Plane - e.Plane) > Eps)
       continue;
     const Polygon tp = Project(t, u, w);
-    if (tp.size() < 3)
+    if (tp.N < 3)
       continue;
-    Polygon part = Clip(tp, ep);
-    if (part.size() < 3)
+    const Polygon part = Clip(tp, ep);
+    if (part.N < 3)
       continue;
     const double a = SignedArea(part);
     if (!(a > Eps * area))
@@ -346,7 +359,7 @@ bool Covered(const Shape& e, const std::vector<Shape>& targets, const std::vecto
       if (SignedArea(Clip(part, other)) > Eps * area)
         return false; // overlapping pieces: the sum proves nothing
     sum += a;
-    parts.push_back(std::move(part));
+    parts.push_back(part);
   }
   return sum >= area * (1.0 - Eps);
 }
@@ -520,31 +533,7 @@ private:
 template <class Body>
 void ParallelFor(std::size_t n, Body&& body)
 {
-  unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-  if (n < 2048)
-    threads = 1;
-  std::atomic<std::size_t> next{ 0 };
-  constexpr std::size_t Chunk = 256;
-  auto worker = [&](unsigned t) {
-    for (;;)
-    {
-      const std::size_t b = next.fetch_add(Chunk);
-      if (b >= n)
-        return;
-      body(t, b, std::min(n, b + Chunk));
-    }
-  };
-  if (threads == 1)
-  {
-    worker(0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker, t);
-  worker(0);
-  for (auto& th : pool)
-    th.join();
+  checks_detail::ParallelChunks(n, 256, body);
 }
 
 void AtomicMax(std::atomic<double>& a, double v)
@@ -563,6 +552,9 @@ public:
     , Targets(targets)
     , Grid(targets)
   {
+    Boxes.resize(targets.size());
+    for (std::size_t i = 0; i < targets.size(); ++i)
+      Bounds(targets[i], Boxes[i][0], Boxes[i][1]);
   }
 
   /// Upper bound on h(elements, targets), tight to tolerance (unless a limit is hit).
@@ -581,8 +573,12 @@ public:
       double localLB = 0.0;
       for (std::size_t i = b; i < e; ++i)
       {
-        Gather(Elements[i], ws, ws.Cands);
-        const Bounds2 ev = Evaluate(Elements[i], ws.Cands);
+        if (Gather(Elements[i], ws, ws.Cands))
+        {
+          ub[i] = 0.0; // covered
+          continue;
+        }
+        const Bounds2 ev = Evaluate(Elements[i], ws.Cands, false);
         localLB = std::max(localLB, ev.Lower);
         ub[i] = ev.Upper;
       }
@@ -620,7 +616,8 @@ public:
       Workspace ws(Targets.size());
       for (std::size_t i = b; i < e && ok.load(std::memory_order_relaxed); ++i)
       {
-        Gather(Elements[i], ws, ws.Cands);
+        if (Gather(Elements[i], ws, ws.Cands))
+          continue; // covered: distance 0
         if (!Certify(Elements[i], ws.Cands, 0, h, ws))
           ok = false;
       }
@@ -667,22 +664,14 @@ private:
       radius = std::max(radius, Distance(centre, c[t]));
   }
 
-  static double SqBoxDistance(const Point3& p, const Shape& s)
+  double SqBoxDistance(const Point3& p, std::uint32_t id) const
   {
-    Point3 lo, hi;
-    Bounds(s, lo, hi);
-    return SquaredDistanceToBox(p, lo, hi);
+    return SquaredDistanceToBox(p, Boxes[id][0], Boxes[id][1]);
   }
 
-  /// Candidate targets for an element from the grid: every target that can be
-  /// the nearest one to a point of the element.
-  void Gather(const Shape& e, Workspace& ws, std::vector<std::uint32_t>& out) const
+  /// Targets whose bounding box meets the ball (c, R), from the grid.
+  void GatherBall(const Point3& c, double R, Workspace& ws, std::vector<std::uint32_t>& out) const
   {
-    Point3 c;
-    double r;
-    CentreAndRadius(e, c, r);
-    const double dc = std::sqrt(Grid.NearestSq(c));
-    const double R = (dc + 2 * r) * (1 + 1e-12) + Eps;
     const Point3 lo = { c[0] - R, c[1] - R, c[2] - R }, hi = { c[0] + R, c[1] + R, c[2] + R };
     if (++ws.Tick == 0)
     {
@@ -694,9 +683,29 @@ private:
       if (ws.Stamp[id] == ws.Tick)
         return;
       ws.Stamp[id] = ws.Tick;
-      if (SqBoxDistance(c, Targets[id]) <= R * R)
+      if (SqBoxDistance(c, id) <= R * R)
         out.push_back(id);
     });
+  }
+
+  /// Candidate targets for an element: every target that can be the nearest
+  /// one to a point of the element. Returns true instead (and `out` is not
+  /// usable) if the element is covered by coplanar targets: those meet the
+  /// ball of radius r around the centre, a much smaller search.
+  bool Gather(const Shape& e, Workspace& ws, std::vector<std::uint32_t>& out) const
+  {
+    Point3 c;
+    double r;
+    CentreAndRadius(e, c, r);
+    if (e.Axis >= 0)
+    {
+      GatherBall(c, r * (1 + 1e-12) + Eps, ws, out);
+      if (Covered(e, Targets, out))
+        return true;
+    }
+    const double dc = std::sqrt(Grid.NearestSq(c));
+    GatherBall(c, (dc + 2 * r) * (1 + 1e-12) + Eps, ws, out);
+    return false;
   }
 
   /// Candidates of a sub-element, from those of its parent.
@@ -711,14 +720,14 @@ private:
     const double R = (std::sqrt(best) + 2 * r) * (1 + 1e-12) + Eps;
     out.clear();
     for (std::uint32_t id : in)
-      if (SqBoxDistance(c, Targets[id]) <= R * R)
+      if (SqBoxDistance(c, id) <= R * R)
         out.push_back(id);
   }
 
-  Bounds2 Evaluate(const Shape& e, const std::vector<std::uint32_t>& cands)
+  Bounds2 Evaluate(const Shape& e, const std::vector<std::uint32_t>& cands, bool tryCover = true)
   {
     Work.fetch_add(static_cast<long long>(cands.size()), std::memory_order_relaxed);
-    if (e.Axis >= 0 && Covered(e, Targets, cands))
+    if (tryCover && e.Axis >= 0 && Covered(e, Targets, cands))
       return { 0.0, 0.0 };
     Point3 c[4];
     const int n = Corners(e, c);
@@ -787,6 +796,7 @@ private:
   const std::vector<Shape>& Elements;
   const std::vector<Shape>& Targets;
   ShapeGrid Grid;
+  std::vector<std::array<Point3, 2>> Boxes; ///< bounding boxes of the targets
   std::atomic<long long> Work{ 0 };
 };
 
@@ -866,6 +876,13 @@ Boundaries ExtractBoundaries(const LabelImage& image, const SimplexMesh& mesh)
   return b;
 }
 
+/// A material whose boundaries are the overall ones (a single material):
+/// its pieces are a subset of the overall ones, so equal counts mean equal sets.
+bool SameAsOverall(const Boundaries& b, const std::pair<std::vector<Shape>, std::vector<Shape>>& m)
+{
+  return m.first.size() == b.Image.size() && m.second.size() == b.Mesh.size();
+}
+
 DistanceReport MeasurePair(const std::vector<Shape>& image, const std::vector<Shape>& mesh, double tolerance)
 {
   DistanceReport d;
@@ -896,7 +913,9 @@ HausdorffReport MeasureHausdorff(const LabelImage& image, const SimplexMesh& mes
   HausdorffReport report;
   report.Overall = MeasurePair(b.Image, b.Mesh, tolerance);
   for (const auto& entry : b.PerMaterial)
-    report.PerMaterial[entry.first] = MeasurePair(entry.second.first, entry.second.second, tolerance);
+    report.PerMaterial[entry.first] = SameAsOverall(b, entry.second)
+      ? report.Overall
+      : MeasurePair(entry.second.first, entry.second.second, tolerance);
   return report;
 }
 
@@ -906,7 +925,8 @@ bool WithinHausdorff(const LabelImage& image, const SimplexMesh& mesh, double im
   if (!WithinPair(b.Image, b.Mesh, imageToMesh, meshToImage))
     return false;
   for (const auto& entry : b.PerMaterial)
-    if (!WithinPair(entry.second.first, entry.second.second, imageToMesh, meshToImage))
+    if (!SameAsOverall(b, entry.second) &&
+      !WithinPair(entry.second.first, entry.second.second, imageToMesh, meshToImage))
       return false;
   return true;
 }

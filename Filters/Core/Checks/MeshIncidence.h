@@ -21,7 +21,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 namespace labelmesher
@@ -48,6 +50,15 @@ VertexIncidence BuildVertexIncidence(const SimplexMesh& mesh);
 template <class Visit>
 void ForEachFacet(const SimplexMesh& mesh, const VertexIncidence& incidence, Visit&& visit)
 {
+  ForEachFacet(mesh, incidence, 0, incidence.NumberOfPoints(), visit);
+}
+
+/// ForEachFacet restricted to the facets whose smallest vertex is in [first, last):
+/// disjoint ranges visit disjoint facets, so ranges can go to different threads.
+template <class Visit>
+void ForEachFacet(const SimplexMesh& mesh, const VertexIncidence& incidence, std::size_t first,
+  std::size_t last, Visit&& visit)
+{
   struct Entry
   {
     std::int64_t A, B;
@@ -56,7 +67,7 @@ void ForEachFacet(const SimplexMesh& mesh, const VertexIncidence& incidence, Vis
   const int nv = mesh.VerticesPerCell();
   std::vector<Entry> local;
   std::vector<std::uint32_t> group;
-  for (std::size_t v = 0; v < incidence.NumberOfPoints(); ++v)
+  for (std::size_t v = first; v < last; ++v)
   {
     local.clear();
     const std::int64_t vid = static_cast<std::int64_t>(v);
@@ -108,12 +119,14 @@ void ForEachFacet(const SimplexMesh& mesh, const VertexIncidence& incidence, Vis
 }
 
 /// Calls visit(a, b) once per distinct edge {a < b} of the mesh's cells.
+/// Restricted to the edges whose smallest vertex is in [first, last).
 template <class Visit>
-void ForEachEdge(const SimplexMesh& mesh, const VertexIncidence& incidence, Visit&& visit)
+void ForEachEdge(const SimplexMesh& mesh, const VertexIncidence& incidence, std::size_t first,
+  std::size_t last, Visit&& visit)
 {
   const int nv = mesh.VerticesPerCell();
   std::vector<std::int64_t> local;
-  for (std::size_t v = 0; v < incidence.NumberOfPoints(); ++v)
+  for (std::size_t v = first; v < last; ++v)
   {
     local.clear();
     const std::int64_t vid = static_cast<std::int64_t>(v);
@@ -129,6 +142,38 @@ void ForEachEdge(const SimplexMesh& mesh, const VertexIncidence& incidence, Visi
     for (std::int64_t w : local)
       visit(vid, w);
   }
+}
+
+/// Runs body(thread, begin, end) over chunks of [0, n) on up to `maxThreads`
+/// threads (hardware concurrency, at most 8, by default); single-threaded for small n.
+template <class Body>
+void ParallelChunks(std::size_t n, std::size_t chunk, Body&& body, unsigned maxThreads = 8)
+{
+  unsigned threads = std::max(1u, std::min(maxThreads, std::thread::hardware_concurrency()));
+  if (n <= chunk)
+    threads = 1;
+  std::atomic<std::size_t> next{ 0 };
+  auto worker = [&](unsigned t) {
+    for (;;)
+    {
+      const std::size_t b = next.fetch_add(chunk);
+      if (b >= n)
+        return;
+      body(t, b, std::min(n, b + chunk));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back(worker, t);
+  worker(0);
+  for (auto& th : pool)
+    th.join();
+}
+
+/// Number of threads ParallelChunks may use.
+inline unsigned MaxThreads()
+{
+  return std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
 }
 
 /// One record per (mesh boundary facet, non-zero material m) such that the

@@ -15,6 +15,7 @@
 #include "MeshChecks.h"
 
 #include "Geometry.h"
+#include "MeshIncidence.h"
 
 #include <cmath>
 #include <limits>
@@ -56,47 +57,60 @@ QualityReport MeasureQuality(const SimplexMesh& mesh)
   QualityReport report;
   if (mesh.NumberOfCells() == 0)
     return report;
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  const auto& P = mesh.Points;
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  struct Local
   {
-    const std::int64_t* v = mesh.Cell(c);
-    if (mesh.Dimension == 3)
+    double Lo = std::numeric_limits<double>::infinity();
+    double Hi = -std::numeric_limits<double>::infinity();
+    std::size_t Inverted = 0;
+  };
+  std::vector<Local> locals(checks_detail::MaxThreads());
+  const auto& P = mesh.Points;
+  checks_detail::ParallelChunks(mesh.NumberOfCells(), 16384, [&](unsigned t, std::size_t b, std::size_t e) {
+    Local& local = locals[t];
+    for (std::size_t c = b; c < e; ++c)
     {
-      const Point3 *p[4] = { &P[v[0]], &P[v[1]], &P[v[2]], &P[v[3]] };
-      const double det =
-        Dot(Sub(*p[1], *p[0]), Cross(Sub(*p[2], *p[0]), Sub(*p[3], *p[0])));
-      if (!(det > 0.0))
-        ++report.InvertedCells;
-      // The six edges (i, j) with opposite vertices (k, l).
-      static const int edges[6][4] = { { 0, 1, 2, 3 }, { 0, 2, 1, 3 }, { 0, 3, 1, 2 },
-        { 1, 2, 0, 3 }, { 1, 3, 0, 2 }, { 2, 3, 0, 1 } };
-      for (const auto& e : edges)
+      const std::int64_t* v = mesh.Cell(c);
+      if (mesh.Dimension == 3)
       {
-        const double angle = DihedralAngle(*p[e[0]], *p[e[1]], *p[e[2]], *p[e[3]]);
-        lo = std::min(lo, angle);
-        hi = std::max(hi, angle);
+        const Point3* p[4] = { &P[v[0]], &P[v[1]], &P[v[2]], &P[v[3]] };
+        const double det = Dot(Sub(*p[1], *p[0]), Cross(Sub(*p[2], *p[0]), Sub(*p[3], *p[0])));
+        if (!(det > 0.0))
+          ++local.Inverted;
+        // The six edges (i, j) with opposite vertices (k, l).
+        static const int edges[6][4] = { { 0, 1, 2, 3 }, { 0, 2, 1, 3 }, { 0, 3, 1, 2 }, { 1, 2, 0, 3 },
+          { 1, 3, 0, 2 }, { 2, 3, 0, 1 } };
+        for (const auto& ed : edges)
+        {
+          const double angle = DihedralAngle(*p[ed[0]], *p[ed[1]], *p[ed[2]], *p[ed[3]]);
+          local.Lo = std::min(local.Lo, angle);
+          local.Hi = std::max(local.Hi, angle);
+        }
+      }
+      else
+      {
+        const Point3* p[3] = { &P[v[0]], &P[v[1]], &P[v[2]] };
+        const Point3 ab = Sub(*p[1], *p[0]), ac = Sub(*p[2], *p[0]);
+        const double area2 = ab[0] * ac[1] - ab[1] * ac[0];
+        if (!(area2 > 0.0))
+          ++local.Inverted;
+        for (int i = 0; i < 3; ++i)
+        {
+          const Point3& o = *p[i];
+          const double angle = AngleBetween(Sub(*p[(i + 1) % 3], o), Sub(*p[(i + 2) % 3], o));
+          local.Lo = std::min(local.Lo, angle);
+          local.Hi = std::max(local.Hi, angle);
+        }
       }
     }
-    else
-    {
-      const Point3 *p[3] = { &P[v[0]], &P[v[1]], &P[v[2]] };
-      const Point3 ab = Sub(*p[1], *p[0]), ac = Sub(*p[2], *p[0]);
-      const double area2 = ab[0] * ac[1] - ab[1] * ac[0];
-      if (!(area2 > 0.0))
-        ++report.InvertedCells;
-      for (int i = 0; i < 3; ++i)
-      {
-        const Point3& o = *p[i];
-        const double angle = AngleBetween(Sub(*p[(i + 1) % 3], o), Sub(*p[(i + 2) % 3], o));
-        lo = std::min(lo, angle);
-        hi = std::max(hi, angle);
-      }
-    }
+  });
+  report.MinimumAngle = std::numeric_limits<double>::infinity();
+  report.MaximumAngle = -std::numeric_limits<double>::infinity();
+  for (const Local& l : locals)
+  {
+    report.MinimumAngle = std::min(report.MinimumAngle, l.Lo);
+    report.MaximumAngle = std::max(report.MaximumAngle, l.Hi);
+    report.InvertedCells += l.Inverted;
   }
-  report.MinimumAngle = lo;
-  report.MaximumAngle = hi;
   return report;
 }
 

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_benchmarks_LabelImageFile_h
+#define labelmesher_benchmarks_LabelImageFile_h
+
+/**
+ * @file LabelImageFile.h
+ * Benchmark-side input: reads a 3D label image (NRRD, NIfTI, MetaImage) with
+ * ITK (itk::ImageFileReader<itk::Image<int, 3>>; VTK 9.1 misreads gzip NRRD)
+ * into the core's index-space LabelImage. Spacing is reported but not applied:
+ * distances and h are in voxel units, as the core sees them. Kept out of the
+ * core on purpose (the core has no I/O and no ITK).
+ */
+
+#include "LabelImage.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace labelmesher
+{
+namespace benchmarks
+{
+
+struct LabelImageFile
+{
+  LabelImage Image;
+  std::array<double, 3> Spacing{ 1, 1, 1 };
+};
+
+/// Throws std::runtime_error when the file cannot be read, is not 3D (a 2D
+/// file is read as nz == 1), or has negative labels.
+LabelImageFile ReadLabelImageFile(const std::string& path);
+
+/// The *.nrrd files of `directory`, sorted by name (empty if it does not exist).
+std::vector<std::string> ListNrrdFiles(const std::string& directory);
+
+} // namespace benchmarks
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// LabelMesherBenchmarks: per-stage figures of MeshLabelImage (h(I,M) = h(M,I) = 2
+// voxels) on the Cassini volumes of dissertation section 5.1.1 (100..400 voxels a
+// side), on the shared real label volumes and on a batch of random property-test
+// images. See Benchmarks/README.md for what each counter means.
+#include "LabelOctreeMesher.h"
+#include "RandomLabelImages.h"
+#include "SyntheticShapes.h"
+#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
+#include "LabelImageFile.h"
+#endif
+
+#include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace labelmesher;
+
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+/// Peak resident set (VmHWM) since the last ResetPeakRss(), in MiB; -1 if unknown.
+double PeakRssMiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0)
+      return std::atof(line.c_str() + 6) / 1024.0;
+  return -1.0;
+}
+/// Linux >= 4.0: writing 5 to clear_refs resets VmHWM to the current RSS, so
+/// each benchmark case reports its own peak (ru_maxrss cannot be reset).
+void ResetPeakRss()
+{
+  std::ofstream clear("/proc/self/clear_refs");
+  if (clear)
+    clear << "5";
+}
+/// getrusage's ru_maxrss: the process's lifetime peak, in MiB.
+double MaxRssMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0; // kB on Linux
+}
+
+std::string CounterName(const std::string& stage)
+{
+  std::string name = "s_";
+  for (char c : stage)
+    name += (c == ' ' || c == '/' || c == ',') ? '_' : c;
+  return name;
+}
+
+MesherParameters H2()
+{
+  MesherParameters parameters;
+  parameters.ImageToMeshDistance = 2.0;
+  parameters.MeshToImageDistance = 2.0;
+  return parameters;
+}
+
+/// Times MeshLabelImage(image, h = 2) and reports the counters.
+void MeshAndReport(benchmark::State& state, const LabelImage& image)
+{
+  const MesherParameters parameters = H2();
+  ResetPeakRss();
+  double total = 0.0;
+  std::map<std::string, double> stages;
+  std::vector<std::string> stageOrder;
+  std::size_t cells = 0, foregroundCells = 0, boundaryFaces = 0, leaves = 0;
+  std::int64_t iterations = 0;
+  try
+  {
+    for (auto _ : state)
+    {
+      const auto start = Clock::now();
+      MesherResult result = MeshLabelImage(image, parameters);
+      total += std::chrono::duration<double>(Clock::now() - start).count();
+      for (const auto& timing : result.Timings)
+      {
+        if (!stages.count(timing.Stage))
+          stageOrder.push_back(timing.Stage);
+        stages[timing.Stage] += timing.Seconds;
+      }
+      cells = result.Mesh.NumberOfCells();
+      foregroundCells = 0;
+      for (auto m : result.Mesh.Materials)
+        foregroundCells += m != 0;
+      boundaryFaces = result.Boundary.NumberOfCells();
+      leaves = result.NumberOfLeaves;
+      ++iterations;
+      benchmark::DoNotOptimize(result.Mesh.Points.data());
+    }
+  }
+  catch (const std::exception& e)
+  {
+    state.SkipWithError(e.what());
+    return;
+  }
+  if (iterations == 0)
+    return;
+  const double seconds = total / iterations;
+  const double voxels = double(image.NumberOfVoxels());
+  state.counters["voxels"] = voxels;
+  state.counters["cells"] = double(cells);
+  state.counters["fg_cells"] = double(foregroundCells);
+  state.counters["bnd_faces"] = double(boundaryFaces);
+  state.counters["leaves"] = double(leaves);
+  state.counters["voxels/s"] = voxels / seconds;
+  state.counters["cells/s"] = double(cells) / seconds;
+  for (const auto& stage : stageOrder)
+    state.counters[CounterName(stage)] = stages[stage] / iterations;
+  state.counters["peak_rss_MiB"] = PeakRssMiB();
+  state.counters["maxrss_MiB"] = MaxRssMiB();
+}
+
+void BenchmarkCassini(benchmark::State& state, int n)
+{
+  // Built outside the timed loop: input preparation is not part of the figure.
+  const LabelImage image = testing::MakeCassiniVolume(n);
+  MeshAndReport(state, image);
+}
+
+#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
+void BenchmarkFile(benchmark::State& state, const std::string& path)
+{
+  // Read outside the timed loop: I/O is not part of the figure.
+  LabelImage image;
+  try
+  {
+    image = benchmarks::ReadLabelImageFile(path).Image;
+  }
+  catch (const std::exception& e)
+  {
+    state.SkipWithError(e.what());
+    return;
+  }
+  MeshAndReport(state, image);
+}
+#endif
+
+/// Meshes `count` random property-test images per iteration (seeds 0..count-1).
+void BenchmarkRandomImages(benchmark::State& state, int dimension, int count)
+{
+  std::vector<LabelImage> images;
+  std::size_t voxels = 0;
+  for (int seed = 0; seed < count; ++seed)
+  {
+    images.push_back(testing::GenerateRandomLabelImage(std::uint64_t(seed), dimension));
+    voxels += images.back().NumberOfVoxels();
+  }
+  const MesherParameters parameters = H2();
+  ResetPeakRss();
+  double total = 0.0;
+  std::size_t cells = 0, failures = 0;
+  std::int64_t iterations = 0;
+  for (auto _ : state)
+  {
+    const auto start = Clock::now();
+    cells = 0;
+    failures = 0;
+    for (const auto& image : images)
+    {
+      try
+      {
+        cells += MeshLabelImage(image, parameters).Mesh.NumberOfCells();
+      }
+      catch (const std::exception&)
+      {
+        ++failures;
+      }
+    }
+    total += std::chrono::duration<double>(Clock::now() - start).count();
+    ++iterations;
+  }
+  const double seconds = total / std::max<std::int64_t>(1, iterations);
+  state.counters["images"] = double(count);
+  state.counters["images/s"] = count / seconds;
+  state.counters["voxels"] = double(voxels);
+  state.counters["voxels/s"] = voxels / seconds;
+  state.counters["cells"] = double(cells);
+  state.counters["cells/s"] = cells / seconds;
+  state.counters["failures"] = double(failures);
+  state.counters["peak_rss_MiB"] = PeakRssMiB();
+}
+
+std::string DataDirectory()
+{
+  if (const char* env = std::getenv("LABELMESHER_DATA_DIR"))
+    return env;
+#ifdef LABELMESHER_SHARED_DATA_DIR
+  return LABELMESHER_SHARED_DATA_DIR;
+#else
+  return "../shared/data";
+#endif
+}
+
+void RegisterAll()
+{
+  for (int n : { 100, 200, 300, 400 })
+    benchmark::RegisterBenchmark(("MeshLabelImage/Cassini/" + std::to_string(n)).c_str(),
+      [n](benchmark::State& state) { BenchmarkCassini(state, n); })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
+
+#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
+  for (const std::string& path : benchmarks::ListNrrdFiles(DataDirectory() + "/3d"))
+  {
+    const std::string name = std::filesystem::path(path).stem().string();
+    benchmark::RegisterBenchmark(("MeshLabelImage/File/" + name).c_str(),
+      [path](benchmark::State& state) { BenchmarkFile(state, path); })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
+  }
+#endif
+
+  for (int dimension : { 2, 3 })
+    benchmark::RegisterBenchmark(("MeshLabelImage/RandomImages" + std::to_string(dimension) + "D/100").c_str(),
+      [dimension](benchmark::State& state) { BenchmarkRandomImages(state, dimension, 100); })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  RegisterAll();
+  benchmark::AddCustomContext("h(I,M)=h(M,I)", "2 voxels");
+  benchmark::AddCustomContext("data", DataDirectory());
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

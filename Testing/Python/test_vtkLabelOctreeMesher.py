@@ -247,6 +247,32 @@ class OptionsTest(unittest.TestCase):
                 self.assertGreater(boundary.GetNumberOfLines(), 0)
 
 
+class ProgressAndAbortTest(unittest.TestCase):
+
+    def test_progress_is_reported_and_abort_gives_empty_output(self):
+        mesher = labelmesher.vtkLabelOctreeMesher()
+        mesher.SetInputData(make_image(ball(24, (11.5, 11.5, 11.5), 9.0)))
+        seen = []
+
+        def on_progress(obj, event):
+            seen.append((obj.GetProgress(), obj.GetProgressText()))
+            if obj.GetProgress() > 0.0:
+                obj.SetAbortExecute(1)
+
+        warnings = []
+        mesher.AddObserver(vtkCommand.WarningEvent, lambda obj, event: warnings.append(event))
+        tag = mesher.AddObserver(vtkCommand.ProgressEvent, on_progress)
+        mesher.Update()
+        self.assertTrue(any(progress > 0.0 and text for progress, text in seen), seen)
+        self.assertEqual(len(warnings), 1, "an aborted run says so")
+        self.assertEqual(mesher.GetOutput().GetNumberOfCells(), 0)
+        # The next run, not aborted, meshes again.
+        mesher.RemoveObserver(tag)
+        mesher.Modified()
+        mesher.Update()
+        self.assertGreater(mesher.GetOutput().GetNumberOfCells(), 0)
+
+
 class InvalidInputTest(unittest.TestCase):
     """Bad input: an error event and empty output, never a crash."""
 

@@ -2,6 +2,7 @@
 #include "MeshBoundary.h"
 
 #include <algorithm>
+#include <limits>
 #include <unordered_map>
 
 namespace labelmesher
@@ -29,13 +30,52 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
     int Opposite;        ///< owner's vertex not on the face
     std::int64_t Other;  ///< second cell, or -1 (outside of the mesh)
   };
+  // Only a face whose vertices all touch two materials (or the mesh's own
+  // border) can separate materials: mark such vertices first, so that the
+  // hash below holds the faces near interfaces, not every face of the mesh.
+  constexpr std::int64_t kUnseen = std::numeric_limits<std::int64_t>::min();
+  constexpr std::int64_t kMixed = kUnseen + 1;
+  std::vector<std::int64_t> vertexMaterial(mesh.Points.size(), kUnseen);
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    const std::int64_t* cell = mesh.Cell(c);
+    for (int i = 0; i < n; ++i)
+    {
+      std::int64_t& m = vertexMaterial[cell[i]];
+      if (m == kUnseen)
+        m = mesh.Materials[c];
+      else if (m != mesh.Materials[c])
+        m = kMixed;
+    }
+  }
+  // Vertices on the border of the mesh: the ends of faces used once. Found on
+  // the fly below: a face with an unmixed vertex is still hashed when that
+  // vertex lies on the bounding box, where the mesh may end.
+  Point3 lo = mesh.Points.empty() ? Point3{ 0, 0, 0 } : mesh.Points[0], hi = lo;
+  for (const Point3& p : mesh.Points)
+    for (int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  auto candidate = [&](std::int64_t v) {
+    if (vertexMaterial[v] == kMixed)
+      return true;
+    const Point3& p = mesh.Points[v];
+    for (int a = 0; a < mesh.Dimension; ++a)
+      if (p[a] == lo[a] || p[a] == hi[a])
+        return true;
+    return false;
+  };
+
   std::unordered_map<std::array<std::int64_t, 3>, Use, FaceKeyHash> faces;
-  faces.reserve(mesh.NumberOfCells() * 2);
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
     const std::int64_t* cell = mesh.Cell(c);
     for (int o = 0; o < n; ++o)
     {
+      bool possible = true;
+      for (int i = 0; i < n && possible; ++i)
+        possible = i == o || candidate(cell[i]);
+      if (!possible)
+        continue;
       std::array<std::int64_t, 3> key{ -1, -1, -1 };
       int k = 0;
       for (int i = 0; i < n; ++i)

@@ -6,6 +6,11 @@
  * @file MeshBoundary.h
  * The mesh boundary S: every cell face (edge in 2D) whose two sides carry
  * different materials, where the outside of the mesh counts as material 0.
+ *
+ * Precondition: the mesh fills its bounding box (as the mesher's mesh, with
+ * background cells, does), so that faces used by one cell lie on that box;
+ * only faces near interfaces or on the box are hashed, which keeps this pass
+ * proportional to the boundary rather than to the volume.
  */
 
 #include "SimplexMesh.h"

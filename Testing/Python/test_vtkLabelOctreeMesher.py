@@ -169,6 +169,11 @@ class SphereTest(unittest.TestCase):
         if fd.GetArray("MinimumAngle") is not None:
             angles, _ = dihedral_angles(self.points, self.tets)
             self.assertAlmostEqual(fd.GetArray("MinimumAngle").GetValue(0), angles.min(), places=3)
+            # the measured two-sided distances respect the requested bounds
+            self.assertLessEqual(fd.GetArray("MeasuredImageToMeshDistance").GetValue(0), 2.0 + 1e-9)
+            self.assertLessEqual(fd.GetArray("MeasuredMeshToImageDistance").GetValue(0), 2.0 + 1e-9)
+            self.assertTrue(all(fd.GetArray("TopologyMatches").GetValue(i)
+                                for i in range(fd.GetArray("TopologyMatches").GetNumberOfTuples())))
 
 
 class OptionsTest(unittest.TestCase):

@@ -27,20 +27,25 @@
 namespace labelmesher
 {
 
-/// Angles in degrees: dihedral angles of tetrahedra (3D), planar angles of triangles (2D).
+/// Angles in degrees: all six dihedral angles of every tetrahedron (3D), the three
+/// planar angles of every triangle (2D). A degenerate angle (zero-length edge,
+/// collinear points) counts as 0. All fields are 0 for an empty mesh.
 struct QualityReport
 {
   double MinimumAngle = 0.0;
   double MaximumAngle = 0.0;
-  std::size_t InvertedCells = 0; ///< cells with signed volume (area) <= 0
+  std::size_t InvertedCells = 0; ///< cells with signed volume (area) <= 0: det[b-a, c-a, d-a], z of (b-a)x(c-a)
 };
 QualityReport MeasureQuality(const SimplexMesh& mesh);
 
+/// Facets and edges are identified by point ids. Geometric tests use an absolute
+/// tolerance of 1e-9 (index space) and do not assume points on a lattice.
 struct ConformityReport
 {
   /// Faces (3D) / edges (2D) used by more than two cells.
   std::size_t OverSharedFaces = 0;
-  /// Vertices lying strictly inside an edge or face of a cell that does not use them.
+  /// Vertices (points used by at least one cell) lying strictly inside an edge or
+  /// a triangle face of a cell that does not use them (counted once each).
   std::size_t HangingVertices = 0;
   /// Edges (3D) / vertices (2D) of the mesh boundary (faces used by one cell) not
   /// used by exactly two boundary faces: zero means the boundary is watertight.
@@ -52,8 +57,13 @@ struct ConformityReport
 };
 ConformityReport MeasureConformity(const SimplexMesh& mesh);
 
-/// One-sided Hausdorff distances in voxel units. Values are upper bounds on the
-/// exact distances, tight to `tolerance`.
+/// One-sided Hausdorff distances in voxel units between the continuous boundaries
+/// (voxel faces / mesh boundary triangles; pixel edges / segments in 2D),
+/// computed by branch and bound (HausdorffDistance.cxx). Values are upper bounds
+/// on the exact distances, tight to `tolerance` (a depth and work limit per
+/// direction bounds the refinement; past it a value stays an upper bound but may
+/// be less tight). Both values are +infinity when exactly one of the two
+/// boundaries is empty; both 0 when both are.
 struct DistanceReport
 {
   double ImageToMesh = 0.0; ///< h(I, M): max over image boundary of distance to mesh boundary
@@ -62,31 +72,40 @@ struct DistanceReport
 struct HausdorffReport
 {
   DistanceReport Overall;
-  std::map<std::int32_t, DistanceReport> PerMaterial;
+  std::map<std::int32_t, DistanceReport> PerMaterial; ///< every non-zero label of image or mesh
 };
 HausdorffReport MeasureHausdorff(
   const LabelImage& image, const SimplexMesh& mesh, double tolerance = 1.0 / 64.0);
 /// Rigorous yes/no: true only if h(I, M) <= imageToMesh and h(M, I) <= meshToImage
 /// hold exactly (up to 1e-9 for round-off), overall and for every material.
+/// Conservative: an element the branch and bound cannot decide within its depth
+/// and work limits makes the answer false, so a bound equal to a distance that
+/// is reached at a non-vertex point (e.g. a medial point) may not be
+/// certifiable; callers testing a computed value should allow a small margin.
 bool WithinHausdorff(
   const LabelImage& image, const SimplexMesh& mesh, double imageToMesh, double meshToImage);
 
 struct RegionTopology
 {
-  std::size_t Components = 0;
-  long long EulerCharacteristic = 0;
+  std::size_t Components = 0;          ///< connected components of the closed set
+  long long EulerCharacteristic = 0;   ///< V - E + F (- C) of its cell complex
 };
 struct TopologyComparison
 {
-  RegionTopology Image; ///< union of the closed voxels of the material
-  RegionTopology Mesh;  ///< union of the closed cells of the material
+  /// Union of the closed voxels of the label: 26-connected (8 in 2D) voxel
+  /// components; chi of the cubical complex (streamed, O(voxels)).
+  RegionTopology Image;
+  /// Union of the closed cells of the material: cells joined through shared
+  /// vertex ids; chi of the simplicial complex of the cells and their faces.
+  RegionTopology Mesh;
   bool Matches() const
   {
     return Image.Components == Mesh.Components &&
       Image.EulerCharacteristic == Mesh.EulerCharacteristic;
   }
 };
-/// Per non-zero material present in the image or the mesh.
+/// Per non-zero material present in the image or the mesh (zeros on the side
+/// where it is absent).
 std::map<std::int32_t, TopologyComparison> CompareTopology(
   const LabelImage& image, const SimplexMesh& mesh);
 

@@ -40,27 +40,41 @@ VertexIncidence BuildVertexIncidence(const SimplexMesh& mesh)
 std::vector<BoundaryFacetRecord> ExtractMeshBoundary(
   const SimplexMesh& mesh, const VertexIncidence& incidence)
 {
+  // Parallel over vertex ranges; records concatenated in range order, so the
+  // result does not depend on the number of threads.
+  constexpr std::size_t Chunk = 4096;
+  const std::size_t np = incidence.NumberOfPoints();
+  std::vector<std::vector<BoundaryFacetRecord>> perChunk((np + Chunk - 1) / Chunk);
+  ParallelChunks(np, Chunk, [&](unsigned, std::size_t first, std::size_t last) {
+    std::vector<BoundaryFacetRecord>& records = perChunk[first / Chunk];
+    std::vector<std::int32_t> mats;
+    ForEachFacet(mesh, incidence, first, last,
+      [&](const std::array<std::int64_t, 3>& facet, const std::uint32_t* cells, std::size_t count) {
+        mats.clear();
+        for (std::size_t i = 0; i < count; ++i)
+          mats.push_back(mesh.Materials[cells[i]]);
+        std::sort(mats.begin(), mats.end());
+        const bool mixed = mats.front() != mats.back();
+        if (count != 1 && !mixed)
+          return; // interior facet of one material
+        mats.erase(std::unique(mats.begin(), mats.end()), mats.end());
+        bool first = true;
+        for (std::int32_t m : mats)
+        {
+          if (m == 0)
+            continue;
+          records.push_back({ facet, m, first });
+          first = false;
+        }
+      });
+  });
+  std::size_t total = 0;
+  for (const auto& r : perChunk)
+    total += r.size();
   std::vector<BoundaryFacetRecord> records;
-  std::vector<std::int32_t> mats;
-  ForEachFacet(mesh, incidence,
-    [&](const std::array<std::int64_t, 3>& facet, const std::uint32_t* cells, std::size_t count) {
-      mats.clear();
-      for (std::size_t i = 0; i < count; ++i)
-        mats.push_back(mesh.Materials[cells[i]]);
-      std::sort(mats.begin(), mats.end());
-      const bool mixed = mats.front() != mats.back();
-      if (count != 1 && !mixed)
-        return; // interior facet of one material
-      mats.erase(std::unique(mats.begin(), mats.end()), mats.end());
-      bool first = true;
-      for (std::int32_t m : mats)
-      {
-        if (m == 0)
-          continue;
-        records.push_back({ facet, m, first });
-        first = false;
-      }
-    });
+  records.reserve(total);
+  for (const auto& r : perChunk)
+    records.insert(records.end(), r.begin(), r.end());
   return records;
 }
 

@@ -15,7 +15,7 @@ import sys
 
 import numpy as np
 from vtkmodules.vtkCommonDataModel import VTK_TETRA, VTK_TRIANGLE, vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOImage import vtkNIFTIImageWriter, vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -79,6 +79,20 @@ def write_png(name, pixels):
     array = numpy_to_vtk(pixels.reshape(-1, channels), deep=True)
     image.GetPointData().SetScalars(array)
     writer = vtkPNGWriter()
+    writer.SetFileName(path(name))
+    writer.SetInputData(image)
+    writer.Write()
+    return path(name)
+
+
+def write_nifti(name, labels, spacing=(1.0, 1.0, 1.0)):
+    """NIfTI-1 of a [z, y, x] array (.nii.gz is gzip-compressed)."""
+    nz, ny, nx = labels.shape
+    image = vtkImageData()
+    image.SetDimensions(nx, ny, nz)
+    image.SetSpacing(*spacing)
+    image.GetPointData().SetScalars(numpy_to_vtk(np.ascontiguousarray(labels).ravel(), deep=True))
+    writer = vtkNIFTIImageWriter()
     writer.SetFileName(path(name))
     writer.SetInputData(image)
     writer.Write()
@@ -177,6 +191,25 @@ def case_truncated_raw():
     labels = ball(10, 3.5).astype(np.uint8)
     expect_failure(run("mesh", write_nrrd("truncated.nrrd", labels, "uchar", truncate=300),
                        "-o", path("out.vtu")), "truncated")
+
+
+def case_truncated_nifti():
+    # ITK 5.2 reads a NIfTI whose data stops half way without complaint.
+    name = write_nifti("truncated.nii", ball(12, 4.5).astype(np.int16))
+    size = os.path.getsize(name)
+    with open(name, "r+b") as f:
+        f.truncate(size - 1000)
+    expect_failure(run("mesh", name, "-o", path("out.vtu")), "truncated")
+
+
+def case_good_nifti_gz():
+    labels = (ball(12, 4.5, 1) * 7).astype(np.int32)
+    name = write_nifti("ball.nii.gz", labels, spacing=(0.8, 0.8, 1.6))
+    result = run("mesh", name, "-o", path("mesh.vtu"), "--report", path("report.json"))
+    assert result.returncode == 0, result.stderr
+    grid, report = check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TETRA, {7})
+    assert np.allclose(report["image"]["spacing"], [0.8, 0.8, 1.6]), report["image"]  # float32 in NIfTI
+    assert abs(report["parameters"]["distance_unit"] - 0.8) < 1e-6
 
 
 def case_negative_spacing():

@@ -222,8 +222,7 @@ TEST(HausdorffDistance, CornerTetrahedronInAVoxel)
   // voxel corner (.5,.5,.5) projects onto the centroid of the slanted face:
   // h(I, M) = 2/sqrt(3). The slanted face's centroid (-1/6,-1/6,-1/6) is 1/3
   // from the voxel faces, its largest distance: h(M, I) = 1/3.
-  LabelImage image(1, 1, 1 + 0);
-  image = LabelImage(1, 1, 2);
+  LabelImage image(1, 1, 2); // two slices: Dimensions[2] == 1 would mean 2D
   image(0, 0, 0) = 1;
   SimplexMesh mesh;
   mesh.Dimension = 3;
@@ -293,4 +292,35 @@ TEST(HausdorffDistance, VoxelExactSphereIsFast)
               "(%.4f, %.4f)\n",
     n, mesh.NumberOfCells(), measure, within, measureShifted, s.Overall.ImageToMesh,
     s.Overall.MeshToImage);
+}
+
+TEST(HausdorffDistance, OneVertexPushedOutOfAFlatFace)
+{
+  // A 3x3x3 block meshed voxel-exactly; the lattice vertex (1.5, 1.5, 2.5) on
+  // its top face is pushed up by 0.2: the mesh boundary rises in a tent whose
+  // apex is 0.2 above the top plane, the largest h(M, I). The image point under
+  // the apex is nearest to the tent triangles spanned by the apex and two axis
+  // neighbours (the Kuhn split has two of them), of normal (0.2, 0.2, 1) (up
+  // to signs): h(I, M) = 0.2 / sqrt(1.08).
+  LabelImage image(5, 5, 5);
+  for (int k = 1; k <= 3; ++k)
+    for (int j = 1; j <= 3; ++j)
+      for (int i = 1; i <= 3; ++i)
+        image(i, j, k) = 1;
+  SimplexMesh mesh = VoxelMesh(image);
+  int moved = 0;
+  for (auto& p : mesh.Points)
+    if (p[0] == 1.5 && p[1] == 1.5 && p[2] == 3.5)
+    {
+      p[2] += 0.2;
+      ++moved;
+    }
+  ASSERT_EQ(moved, 1);
+  const HausdorffReport r = MeasureHausdorff(image, mesh);
+  const double i2m = 0.2 / std::sqrt(1.08);
+  ExpectMeasured(r.Overall.MeshToImage, 0.2, "M->I");
+  ExpectMeasured(r.Overall.ImageToMesh, i2m, "I->M");
+  ExpectRigorous(image, mesh, i2m, 0.2);
+  // Elsewhere the boundaries still coincide: the per-material values agree.
+  ExpectMeasured(r.PerMaterial.at(1).MeshToImage, 0.2, "material M->I");
 }

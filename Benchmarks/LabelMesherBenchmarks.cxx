@@ -13,6 +13,9 @@
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <chrono>
 #include <cstdlib>
@@ -31,20 +34,30 @@ namespace
 
 using Clock = std::chrono::steady_clock;
 
-/// Peak resident set (VmHWM) since the last ResetPeakRss(), in MiB; -1 if unknown.
-double PeakRssMiB()
+/// A field of /proc/self/status in MiB (its values are in kB); -1 if unknown.
+double StatusMiB(const char* field)
 {
   std::ifstream status("/proc/self/status");
   std::string line;
+  const std::string key = std::string(field) + ":";
   while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0)
-      return std::atof(line.c_str() + 6) / 1024.0;
+    if (line.rfind(key, 0) == 0)
+      return std::atof(line.c_str() + key.size()) / 1024.0;
   return -1.0;
 }
+/// Peak resident set (VmHWM) since the last ResetPeakRss().
+double PeakRssMiB() { return StatusMiB("VmHWM"); }
+/// Current resident set (VmRSS).
+double RssMiB() { return StatusMiB("VmRSS"); }
 /// Linux >= 4.0: writing 5 to clear_refs resets VmHWM to the current RSS, so
 /// each benchmark case reports its own peak (ru_maxrss cannot be reset).
 void ResetPeakRss()
 {
+#if defined(__GLIBC__)
+  // Hand memory freed by earlier cases back to the system first, so the new
+  // baseline is close to what this case itself holds.
+  malloc_trim(0);
+#endif
   std::ofstream clear("/proc/self/clear_refs");
   if (clear)
     clear << "5";
@@ -78,6 +91,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
 {
   const MesherParameters parameters = H2();
   ResetPeakRss();
+  const double rssBefore = RssMiB();
   double total = 0.0;
   std::map<std::string, double> stages;
   std::vector<std::string> stageOrder;
@@ -124,6 +138,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
   state.counters["cells/s"] = double(cells) / seconds;
   for (const auto& stage : stageOrder)
     state.counters[CounterName(stage)] = stages[stage] / iterations;
+  state.counters["rss_before_MiB"] = rssBefore;
   state.counters["peak_rss_MiB"] = PeakRssMiB();
   state.counters["maxrss_MiB"] = MaxRssMiB();
 }

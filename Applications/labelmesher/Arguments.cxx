@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "Arguments.h"
 
+#include "StringUtilities.h"
+
 #include <cmath>
 #include <vector>
 
@@ -8,11 +10,6 @@ namespace labelmesher_cli
 {
 namespace
 {
-
-bool EndsWith(const std::string& s, const std::string& suffix)
-{
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 double ParseDistance(const std::string& option, const std::string& text)
 {

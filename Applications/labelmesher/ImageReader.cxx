@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "ImageReader.h"
 
+#include "StringUtilities.h"
+#include "VTKMessages.h"
+
 #include "itkImage.h"
 #include "itkImageFileReader.h"
 #include "itkImageIOBase.h"
 #include "itkImageIOFactory.h"
 
 #include "vtkAOSDataArrayTemplate.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
@@ -34,17 +36,6 @@ namespace
 
 namespace fs = std::filesystem;
 
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-bool EndsWith(const std::string& s, const std::string& suffix)
-{
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::string VoxelText(std::size_t flat, const int dims[3])
 {
   const std::size_t nx = dims[0], ny = dims[1];
@@ -52,32 +43,6 @@ std::string VoxelText(std::size_t flat, const int dims[3])
   s << "(" << flat % nx << ", " << (flat / nx) % ny << ", " << flat / (nx * ny) << ")";
   return s.str();
 }
-
-/// Captures the first error a VTK reader reports instead of printing it.
-class VTKErrorCatcher
-{
-public:
-  explicit VTKErrorCatcher(vtkObject* object)
-  {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-      auto* self = static_cast<VTKErrorCatcher*>(clientData);
-      if (self->Message.empty() && callData)
-      {
-        std::string text = static_cast<const char*>(callData);
-        const std::size_t at = text.find("): ");
-        text = at == std::string::npos ? text : text.substr(at + 3);
-        text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
-        self->Message = text;
-      }
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  std::string Message;
-
-private:
-  vtkNew<vtkCallbackCommand> Callback;
-};
 
 void CheckSpacing(const double spacing[3], const std::string& path)
 {
@@ -313,12 +278,11 @@ template <typename TReader>
 vtkSmartPointer<vtkImageData> ReadWithVTK(const std::string& path)
 {
   vtkNew<TReader> reader;
-  VTKErrorCatcher errors(reader);
-  VTKErrorCatcher executiveErrors(reader->GetExecutive());
+  VTKMessages errors(reader, vtkCommand::ErrorEvent);
+  VTKMessages executiveErrors(reader->GetExecutive(), vtkCommand::ErrorEvent);
   reader->SetFileName(path.c_str());
   reader->Update();
-  const std::string& message =
-    errors.Message.empty() ? executiveErrors.Message : errors.Message;
+  const std::string& message = errors.First().empty() ? executiveErrors.First() : errors.First();
   vtkImageData* image = reader->GetOutput();
   if (!message.empty() || !image || image->GetNumberOfPoints() == 0)
   {

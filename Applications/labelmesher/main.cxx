@@ -10,6 +10,8 @@
 #include "ImageReader.h"
 #include "ProgressBar.h"
 #include "Report.h"
+#include "StringUtilities.h"
+#include "VTKMessages.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -37,33 +39,6 @@ struct RunError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// Turns VTK error (and optionally warning) events of one object into a
-/// callback, with VTK's "ERROR: In file, line ... Class (0x...): " prefix removed.
-class VTKMessages
-{
-public:
-  VTKMessages(vtkObject* object, unsigned long event)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-      std::string text = data ? static_cast<const char*>(data) : "";
-      const std::size_t at = text.find("): ");
-      text = at == std::string::npos ? text : text.substr(at + 3);
-      text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
-      auto* messages = static_cast<VTKMessages*>(self);
-      if (messages->First.empty())
-      {
-        messages->First = text;
-      }
-    });
-    object->AddObserver(event, this->Command);
-  }
-  std::string First;
-
-private:
-  vtkNew<vtkCallbackCommand> Command;
-};
-
 double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -71,7 +46,7 @@ double Seconds(std::chrono::steady_clock::time_point since)
 
 void WriteMesh(vtkUnstructuredGrid* mesh, const std::string& path)
 {
-  const bool xml = path.size() >= 4 && path.compare(path.size() - 4, 4, ".vtu") == 0;
+  const bool xml = EndsWith(path, ".vtu");
   vtkSmartPointer<vtkAlgorithm> writer;
   if (xml)
   {
@@ -91,9 +66,9 @@ void WriteMesh(vtkUnstructuredGrid* mesh, const std::string& path)
   VTKMessages errors(writer, vtkCommand::ErrorEvent);
   writer->SetInputDataObject(mesh);
   writer->Update();
-  if (!errors.First.empty())
+  if (!errors.First().empty())
   {
-    throw RunError("cannot write '" + path + "': " + errors.First);
+    throw RunError("cannot write '" + path + "': " + errors.First());
   }
 }
 
@@ -123,14 +98,14 @@ int Run(const Arguments& args)
   mesher->AddObserver(vtkCommand::ProgressEvent, progress);
   mesher->Update();
   bar.Finish();
-  if (!errors.First.empty())
+  if (!errors.First().empty())
   {
-    throw RunError(errors.First);
+    throw RunError(errors.First());
   }
   vtkUnstructuredGrid* mesh = mesher->GetOutput();
   if (mesh->GetNumberOfCells() == 0)
   {
-    throw RunError(warnings.First.empty() ? "the mesher produced no cells" : warnings.First);
+    throw RunError(warnings.First().empty() ? "the mesher produced no cells" : warnings.First());
   }
 
   const auto writeStart = std::chrono::steady_clock::now();

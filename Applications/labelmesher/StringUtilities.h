@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_StringUtilities_h
+#define labelmesher_cli_StringUtilities_h
+
+/**
+ * @file StringUtilities.h
+ * The two string helpers the CLI needs for file names.
+ */
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace labelmesher_cli
+{
+
+/// True when `text` ends with `suffix` (case-sensitive).
+inline bool EndsWith(const std::string& text, const std::string& suffix)
+{
+  return text.size() >= suffix.size() &&
+    text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// ASCII lower case.
+inline std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+} // namespace labelmesher_cli
+
+#endif

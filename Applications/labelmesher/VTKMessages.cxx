@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "VTKMessages.h"
+
+#include "vtkObject.h"
+
+#include <algorithm>
+
+namespace labelmesher_cli
+{
+
+VTKMessages::VTKMessages(vtkObject* object, unsigned long event)
+{
+  this->Command->SetClientData(this);
+  this->Command->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* self = static_cast<VTKMessages*>(clientData);
+    if (!self->FirstMessage.empty() || !callData)
+    {
+      return;
+    }
+    std::string text = static_cast<const char*>(callData);
+    const std::size_t at = text.find("): ");
+    text = at == std::string::npos ? text : text.substr(at + 3);
+    text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
+    self->FirstMessage = text.empty() ? "unknown VTK error" : text;
+  });
+  object->AddObserver(event, this->Command);
+}
+
+} // namespace labelmesher_cli

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_VTKMessages_h
+#define labelmesher_cli_VTKMessages_h
+
+/**
+ * @file VTKMessages.h
+ * Catches the error (or warning) events of one VTK object instead of letting VTK
+ * print them, and keeps the first message as one line, without VTK's
+ * "ERROR: In file, line ... Class (0x...): " prefix.
+ */
+
+#include "vtkCallbackCommand.h"
+#include "vtkNew.h"
+
+#include <string>
+
+class vtkObject;
+
+namespace labelmesher_cli
+{
+
+class VTKMessages
+{
+public:
+  /// `event`: vtkCommand::ErrorEvent or vtkCommand::WarningEvent.
+  VTKMessages(vtkObject* object, unsigned long event);
+  VTKMessages(const VTKMessages&) = delete;
+  VTKMessages& operator=(const VTKMessages&) = delete;
+
+  /// The first message caught; empty if none.
+  const std::string& First() const { return this->FirstMessage; }
+
+private:
+  std::string FirstMessage;
+  vtkNew<vtkCallbackCommand> Command;
+};
+
+} // namespace labelmesher_cli
+
+#endif

@@ -106,14 +106,48 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
   const LabelPyramid pyramid(image, depth);
   clock.Finish("label pyramid");
 
+  // A proper boundary leaf is kept only if it passes the single manifold
+  // condition and the fidelity test, and if every same-size block across its
+  // faces and edges would be kept too: otherwise that neighbour is split, and
+  // the rule that proper leaves meet only same-size leaves splits this one in
+  // a later round anyway. Looking one neighbour ahead saves most of those
+  // rounds (each is a balance and a pass over the forest).
+  const int cubeSide = 1 << depth;
+  const auto proper = [&](const LeafBox& leaf, const LabelSummary& labels) {
+    return SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second) &&
+      SatisfiesFidelity(image, leaf, labels.Second, parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
+  };
+  const auto kept = [&](const LeafBox& leaf) {
+    const LabelSummary labels = pyramid.Block(Log2(leaf.Size), leaf.Origin[0], leaf.Origin[1], leaf.Origin[2]);
+    return labels.IsUniform() || (!labels.HasMoreThanTwo() && proper(leaf, labels));
+  };
+  const auto neighboursKept = [&](const LeafBox& leaf) {
+    const int reach = dimension == 3 ? 1 : 0;
+    for (int dz = -reach; dz <= reach; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const int moved = (dx != 0) + (dy != 0) + (dz != 0);
+          if (moved == 0 || moved == 3)
+            continue; // itself, or a corner neighbour (no rule across corners)
+          LeafBox next = leaf;
+          next.Origin = { leaf.Origin[0] + dx * leaf.Size, leaf.Origin[1] + dy * leaf.Size,
+            leaf.Origin[2] + dz * leaf.Size };
+          bool inside = true;
+          for (int d = 0; d < dimension; ++d)
+            inside = inside && next.Origin[d] >= 0 && next.Origin[d] < cubeSide;
+          if (inside && !kept(next))
+            return false;
+        }
+    return true;
+  };
   const LeafEvaluator evaluate = [&](const LeafBox& leaf) {
     const LabelSummary labels = pyramid.Block(Log2(leaf.Size), leaf.Origin[0], leaf.Origin[1], leaf.Origin[2]);
     if (labels.HasMoreThanTwo())
       return LeafVerdict{ true, 0, 0 };
     if (labels.IsUniform())
       return LeafVerdict{ false, labels.First, labels.First };
-    const bool accepted = SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second) &&
-      SatisfiesFidelity(image, leaf, labels.Second, parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
+    const bool accepted = proper(leaf, labels) && neighboursKept(leaf);
     return LeafVerdict{ !accepted, labels.First, labels.Second };
   };
   const std::vector<OctreeLeaf> leaves = BuildOctree(dimension, depth, evaluate, observer, 0.1, 0.6);

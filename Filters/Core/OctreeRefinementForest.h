@@ -6,6 +6,7 @@
 
 #include "OctreeRefinement.h"
 
+#include <array>
 #include <exception>
 #include <stdexcept>
 
@@ -124,11 +125,13 @@ void Mark(ForestContext& context, p4est_quadrant_t* q)
 }
 
 /// Quadrants around a face or edge, the finest level among them, and whether
-/// any of them is a proper boundary leaf.
+/// any of them is a proper boundary leaf. At most eight quadrants touch a face
+/// (1 + 4) or an edge (4 sides of up to 2): a fixed array, no allocation.
 template <typename Side, int Hanging>
 struct Neighbourhood
 {
-  std::vector<p4est_quadrant_t*> Quadrants;
+  std::array<p4est_quadrant_t*, 8> Quadrants{};
+  int Count = 0;
   int FinestLevel = -1;
   bool AnyProper = false;
 
@@ -148,9 +151,9 @@ struct Neighbourhood
   }
   void Add(p4est_quadrant_t* q)
   {
-    if (!q)
+    if (!q || Count == static_cast<int>(Quadrants.size()))
       return;
-    Quadrants.push_back(q);
+    Quadrants[Count++] = q;
     FinestLevel = std::max(FinestLevel, static_cast<int>(q->level));
     AnyProper = AnyProper || Data(q).First != Data(q).Second;
   }
@@ -163,9 +166,9 @@ void MarkLargerAroundProper(ForestContext& context, const Hood& hood)
 {
   if (!hood.AnyProper)
     return;
-  for (p4est_quadrant_t* q : hood.Quadrants)
-    if (q->level < hood.FinestLevel)
-      Mark(context, q);
+  for (int i = 0; i < hood.Count; ++i)
+    if (hood.Quadrants[i]->level < hood.FinestLevel)
+      Mark(context, hood.Quadrants[i]);
 }
 
 void CheckFace(p4est_iter_face_info_t* info, void*)

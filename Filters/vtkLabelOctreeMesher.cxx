@@ -25,7 +25,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -35,7 +34,6 @@
 #include <cstdint>
 #include <exception>
 #include <limits>
-#include <map>
 #include <string>
 #include <vector>
 

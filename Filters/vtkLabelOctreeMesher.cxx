@@ -297,6 +297,11 @@ void AddMeasures(vtkFieldData* fd, const labelmesher::LabelImage& image,
   AddScalarField(fd, "MaximumAngle", quality.MaximumAngle);
   AddScalarField(fd, "InvertedCells", static_cast<double>(quality.InvertedCells));
 
+  const labelmesher::ConformityReport conformity = labelmesher::MeasureConformity(kept);
+  AddScalarField(fd, "OverSharedFaces", static_cast<double>(conformity.OverSharedFaces));
+  AddScalarField(fd, "HangingVertices", static_cast<double>(conformity.HangingVertices));
+  AddScalarField(fd, "NonManifoldBoundaryEdges", static_cast<double>(conformity.NonManifoldBoundaryEdges));
+
   const labelmesher::HausdorffReport distances = labelmesher::MeasureHausdorff(image, kept);
   AddScalarField(fd, "MeasuredImageToMeshDistance", distances.Overall.ImageToMesh);
   AddScalarField(fd, "MeasuredMeshToImageDistance", distances.Overall.MeshToImage);

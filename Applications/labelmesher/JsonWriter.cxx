@@ -121,7 +121,8 @@ JsonWriter& JsonWriter::Number(double value)
   }
   this->BeforeValue();
   char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.10g", value);
+  // Round-trip precision: reports are compared against exact bounds.
+  std::snprintf(buffer, sizeof(buffer), "%.17g", value);
   this->Out << buffer;
   return *this;
 }

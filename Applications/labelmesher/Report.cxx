@@ -84,6 +84,9 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
   r.InvertedCells = Field(fd, "InvertedCells");
   r.MeasuredImageToMesh = Field(fd, "MeasuredImageToMeshDistance");
   r.MeasuredMeshToImage = Field(fd, "MeasuredMeshToImageDistance");
+  r.OverSharedFaces = Field(fd, "OverSharedFaces");
+  r.HangingVertices = Field(fd, "HangingVertices");
+  r.NonManifoldBoundaryEdges = Field(fd, "NonManifoldBoundaryEdges");
   if (vtkDataArray* materials = fd->GetArray("TopologyMaterial"))
   {
     for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
@@ -134,6 +137,10 @@ void PrintSummary(const RunReport& r, std::ostream& out)
         << Fixed(r.ImageToMeshBound, 3) << ")" << unit << "\n";
     out << "Hausdorff h(M,I): " << Fixed(r.MeasuredMeshToImage.value_or(0.0), 3) << " (bound "
         << Fixed(r.MeshToImageBound, 3) << ")" << unit << "\n";
+    out << "Conformity: " << static_cast<long long>(r.OverSharedFaces.value_or(0.0))
+        << " over-shared faces, " << static_cast<long long>(r.HangingVertices.value_or(0.0))
+        << " hanging vertices, " << static_cast<long long>(r.NonManifoldBoundaryEdges.value_or(0.0))
+        << " non-manifold boundary edges\n";
     out << "Topology (components, Euler characteristic; image vs mesh):\n";
     for (const auto& e : r.Topology)
     {
@@ -214,6 +221,14 @@ void WriteJson(const RunReport& r, std::ostream& out)
   optional(r.MaximumAngle);
   j.Key("inverted_cells");
   optional(r.InvertedCells);
+  j.EndObject();
+  j.Key("conformity").BeginObject();
+  j.Key("over_shared_faces");
+  optional(r.OverSharedFaces);
+  j.Key("hanging_vertices");
+  optional(r.HangingVertices);
+  j.Key("non_manifold_boundary_edges");
+  optional(r.NonManifoldBoundaryEdges);
   j.EndObject();
   j.Key("fidelity").BeginObject();
   j.Key("unit").String("voxels of the smallest spacing");

@@ -46,6 +46,12 @@ struct RunReport
   /// Present only when the filter measured its output.
   std::optional<double> MinimumAngle, MaximumAngle, InvertedCells;
   std::optional<double> MeasuredImageToMesh, MeasuredMeshToImage;
+  /// Conformity of the written mesh: faces shared by more than two cells,
+  /// hanging vertices, boundary edges not shared by exactly two boundary faces
+  /// (non-zero also where the image itself is non-manifold, e.g. two voxels of
+  /// one label touching along an edge; with the background included the
+  /// boundary is the octree's cube and must be 0).
+  std::optional<double> OverSharedFaces, HangingVertices, NonManifoldBoundaryEdges;
   std::vector<TopologyEntry> Topology;
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
 

@@ -6,4 +6,4 @@ here="$(cd "$(dirname "$0")" && pwd)"
 cd "$here/../.."
 bash "$here/install-dependencies.sh"
 bash "$here/build.sh"
-ctest --test-dir build --output-on-failure
+ctest --test-dir build --output-on-failure -j2

@@ -2,6 +2,7 @@
 // MeasureConformity: over-shared facets, hanging vertices (on edges and inside
 // faces, not relying on a lattice) and boundary watertightness.
 #include "MeshChecks.h"
+#include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>
 
@@ -9,18 +10,12 @@
 #include <random>
 
 using namespace labelmesher;
+using labelmesher::testing::Det;
+using labelmesher::testing::RandomImage;
+using labelmesher::testing::VoxelMesh;
 
 namespace
 {
-double Det(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
-{
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-    u[2] * (v[0] * w[1] - v[1] * w[0]);
-}
-
 /// Adds a tetrahedron, positively oriented.
 void AddTet(SimplexMesh& m, std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d, int material = 1)
 {
@@ -28,46 +23,6 @@ void AddTet(SimplexMesh& m, std::int64_t a, std::int64_t b, std::int64_t c, std:
     std::swap(b, c);
   m.Connectivity.insert(m.Connectivity.end(), { a, b, c, d });
   m.Materials.push_back(material);
-}
-
-/// Every voxel with a non-zero label as a cube split into 6 Kuhn tetrahedra
-/// (2 triangles per pixel in 2D); the Kuhn split of a lattice is conforming.
-SimplexMesh VoxelMesh(const LabelImage& image)
-{
-  SimplexMesh m;
-  const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
-  const bool is2D = nz == 1;
-  m.Dimension = is2D ? 2 : 3;
-  const int lz = is2D ? 1 : nz + 1;
-  std::vector<std::int64_t> id(static_cast<std::size_t>(nx + 1) * (ny + 1) * lz, -1);
-  auto point = [&](int i, int j, int k) {
-    std::int64_t& p = id[(static_cast<std::size_t>(k) * (ny + 1) + j) * (nx + 1) + i];
-    if (p < 0)
-    {
-      p = static_cast<std::int64_t>(m.Points.size());
-      m.Points.push_back({ i - 0.5, j - 0.5, is2D ? 0.0 : k - 0.5 });
-    }
-    return p;
-  };
-  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::int32_t l = image.At(i, j, k);
-        if (l == 0)
-          continue;
-        auto corner = [&](int b) { return point(i + (b & 1), j + ((b >> 1) & 1), is2D ? 0 : k + ((b >> 2) & 1)); };
-        if (is2D)
-        {
-          m.Connectivity.insert(m.Connectivity.end(), { corner(0), corner(1), corner(3), corner(0), corner(3), corner(2) });
-          m.Materials.insert(m.Materials.end(), { l, l });
-          continue;
-        }
-        for (const auto& p : perms)
-          AddTet(m, corner(0), corner(1 << p[0]), corner((1 << p[0]) | (1 << p[1])), corner(7), l);
-      }
-  return m;
 }
 
 SimplexMesh Empty3D(const std::vector<Point3>& pts)

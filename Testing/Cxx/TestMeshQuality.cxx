@@ -2,12 +2,16 @@
 // MeasureQuality: dihedral angles (3D), planar angles (2D) and inverted cells,
 // checked against values computed analytically.
 #include "MeshChecks.h"
+#include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace labelmesher;
+using labelmesher::testing::Det;
+using labelmesher::testing::RandomImage;
+using labelmesher::testing::VoxelMesh;
 
 namespace
 {
@@ -32,15 +36,6 @@ SimplexMesh Triangles(const std::vector<Point3>& points, const std::vector<std::
   m.Connectivity = conn;
   m.Materials.assign(conn.size() / 3, 1);
   return m;
-}
-
-double Det(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
-{
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-    u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
 /// The unit cube split into the 6 Kuhn tetrahedra around its (0,0,0)-(1,1,1) diagonal.

@@ -2,6 +2,7 @@
 #include "FaceTriangulation.h"
 
 #include "Geometry.h"
+#include "LatticeLabels.h"
 
 #include <stdexcept>
 
@@ -106,41 +107,51 @@ std::vector<std::vector<FaceTriangle>> PieceCandidates(const std::vector<FacePoi
   return candidates;
 }
 
-/// The crossed-face table entry for `cornerBits` (see the header).
-std::vector<FaceTriangle> BuildCrossed(unsigned cornerBits)
+/// The crossed-face table entry for the corner signs (see the header); empty
+/// when the face is not crossed or is a saddle.
+std::vector<FaceTriangle> BuildCrossed(unsigned negative, unsigned zero)
 {
-  int crossed[2], count = 0;
-  for (int e = 0; e < 4; ++e)
+  auto sign = [&](int q) { return ((zero >> q) & 1u) ? 0 : (((negative >> q) & 1u) ? -1 : 1); };
+  const std::array<int, 4> ringSigns{ sign(kRingCorner[0]), sign(kRingCorner[1]), sign(kRingCorner[2]),
+    sign(kRingCorner[3]) };
+  std::array<int, 8> where{};
+  if (RingTransitions(ringSigns, where) != 2)
+    return {};
+  // The ring with the two transition points: corners, and the midpoints of
+  // crossed sides (ring positions: 2 i corner kRingCorner[i], 2 i + 1 side i).
+  struct Stop
   {
-    const auto c = FaceEdgeCorners(e);
-    if (((cornerBits >> c[0]) & 1u) != ((cornerBits >> c[1]) & 1u))
-    {
-      if (count == 2)
-        throw std::logic_error("crossed face with a saddle: excluded by the single manifold condition");
-      crossed[count++] = e;
-    }
+    FacePoint Point;
+    int Corner; ///< face corner, or -1 for a midpoint
+    bool Transition;
+  };
+  std::vector<Stop> ring;
+  for (int position = 0; position < 8; ++position)
+  {
+    const bool transition = position == where[0] || position == where[1];
+    if (position % 2 == 0)
+      ring.push_back({ kCorner[kRingCorner[position / 2]], kRingCorner[position / 2], transition });
+    else if (transition)
+      ring.push_back({ kMidpoint[position / 2], -1, true });
   }
-  if (count != 2)
-    throw std::logic_error("crossed face without an intersection edge");
-
-  // Split the ring at the two intersection vertices into two convex pieces.
-  const std::vector<RingPoint> ring = Ring((1u << crossed[0]) | (1u << crossed[1]));
   std::size_t cut[2], found = 0;
   for (std::size_t i = 0; i < ring.size(); ++i)
-    if (ring[i].Corner < 0)
+    if (ring[i].Transition)
       cut[found++] = i;
   std::vector<FacePoint> pieces[2];
-  int sides[2];
+  int sides[2] = { -1, -1 };
   for (int p = 0; p < 2; ++p)
   {
     for (std::size_t i = cut[p];; i = (i + 1) % ring.size())
     {
       pieces[p].push_back(ring[i].Point);
-      if (ring[i].Corner >= 0)
+      if (!ring[i].Transition && ring[i].Corner >= 0 && sign(ring[i].Corner) != 0)
         sides[p] = ring[i].Corner;
       if (i == cut[1 - p])
         break;
     }
+    if (sides[p] < 0)
+      throw std::logic_error("a crossed-face piece without a labelled corner");
   }
 
   const double apexHeight = 0.5;
@@ -191,7 +202,13 @@ double ConedMinimumDihedralAngle(const std::vector<FaceTriangle>& triangles, dou
   return smallest;
 }
 
-std::vector<FaceTriangle> TriangulateFace(FaceKind kind, unsigned midpointMask, unsigned cornerBits)
+bool IsCrossedFace(unsigned negative, unsigned zero)
+{
+  const unsigned labelled = ~zero & 15u;
+  return (negative & labelled) != 0 && (~negative & labelled) != 0;
+}
+
+std::vector<FaceTriangle> TriangulateFace(FaceKind kind, unsigned midpointMask, unsigned negative, unsigned zero)
 {
   switch (kind)
   {
@@ -218,19 +235,20 @@ std::vector<FaceTriangle> TriangulateFace(FaceKind kind, unsigned midpointMask, 
     }
     case FaceKind::Crossed:
     {
-      static const std::array<std::vector<FaceTriangle>, 16> table = [] {
-        std::array<std::vector<FaceTriangle>, 16> t;
-        for (unsigned bits = 0; bits < 16; ++bits)
-        {
-          const bool saddle = bits == 0b0110 || bits == 0b1001;
-          if (bits != 0 && bits != 15 && !saddle)
-            t[bits] = BuildCrossed(bits);
-        }
+      // 81 sign patterns, keyed as negative | zero << 4 (negative bits of
+      // 0-corners are ignored).
+      static const std::array<std::vector<FaceTriangle>, 256> table = [] {
+        std::array<std::vector<FaceTriangle>, 256> t;
+        for (unsigned z = 0; z < 16; ++z)
+          for (unsigned n = 0; n < 16; ++n)
+            if ((n & z) == 0 && IsCrossedFace(n, z))
+              t[n | (z << 4)] = BuildCrossed(n, z);
         return t;
       }();
-      if (table[cornerBits & 15u].empty())
-        throw std::logic_error("no crossed-face stencil for these corner labels");
-      return table[cornerBits & 15u];
+      const unsigned key = (negative & ~zero & 15u) | ((zero & 15u) << 4);
+      if (table[key].empty())
+        throw std::logic_error("no crossed-face stencil for these corner signs (a saddle)");
+      return table[key];
     }
   }
   return {};

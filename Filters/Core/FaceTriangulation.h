@@ -17,10 +17,12 @@
  *    diagonal the six-tetrahedra split of a cube induces on its faces.
  *  - Fan: some edge midpoints; fan from the face centre (TRIANGULATION_1).
  *  - Split: covered by four finer leaves; their four plain sub-faces.
- *  - Crossed: the two labels meet on the face (it belongs to proper boundary
- *    leaves only). The intersection edge joins the midpoints of the two edges
- *    whose ends differ (the 81-case table of Figure 6 restricted to what the
- *    single manifold condition admits: no saddle, no 0-corner), and the pieces
+ *  - Crossed: corners of both labels (proper boundary leaves only). The
+ *    intersection edge joins the two transition points of the face's ring: the
+ *    midpoint of an edge whose ends carry different labels, or a 0-corner
+ *    between corners of different labels (the 81-case table of Figure 6,
+ *    restricted to what the single manifold condition admits: no saddle, no
+ *    two adjacent 0-corners), and the pieces
  *    on either side are triangulated by the candidate — fan from the face
  *    centre or from a piece vertex — whose cone tetrahedra have the largest
  *    minimum dihedral angle. The choice is computed once into a table keyed
@@ -43,8 +45,8 @@ struct FacePoint
 struct FaceTriangle
 {
   std::array<FacePoint, 3> Points;
-  /// Face corner (0..3, bit 0 = high a, bit 1 = high b) whose label the
-  /// triangle's side of the intersection edge carries.
+  /// Face corner (0..3, bit 0 = high a, bit 1 = high b), not a 0-corner, whose
+  /// label the triangle's side of the intersection edge carries.
   int SideCorner = 0;
 };
 
@@ -58,8 +60,13 @@ enum class FaceKind
 
 /// Face edges: 0 (b = 0), 1 (a = 4), 2 (b = 4), 3 (a = 0).
 /// `midpointMask` bit i: face edge i carries its midpoint (Fan only).
-/// `cornerBits` bit q: which of the two labels corner q has (Crossed only).
-std::vector<FaceTriangle> TriangulateFace(FaceKind kind, unsigned midpointMask, unsigned cornerBits);
+/// Crossed only: bit q of `negative` when corner q carries the second label,
+/// of `zero` when it lies on the image boundary (a 0-vertex).
+std::vector<FaceTriangle> TriangulateFace(
+  FaceKind kind, unsigned midpointMask, unsigned negative = 0, unsigned zero = 0);
+
+/// A face is crossed when it has corners of both labels.
+bool IsCrossedFace(unsigned negative, unsigned zero);
 
 /// Face edge i joins these two face corners.
 inline std::array<int, 2> FaceEdgeCorners(int edge)

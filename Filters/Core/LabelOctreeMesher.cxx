@@ -4,9 +4,9 @@
 //   1. label pyramid: which labels each octree block holds (LabelPyramid)
 //   2. octree: refine a p4est forest until every leaf is uniform, or holds two
 //      labels, satisfies the single manifold condition and both fidelity bounds;
-//      2:1 balance across faces and edges; proper boundary leaves meet only
-//      leaves of their own size (OctreeRefinement, SingleManifoldCondition,
-//      LeafSurfacePatch)
+//      2:1 balance across faces and edges; proper boundary leaves meet no
+//      larger leaf, and finer ones only across faces the surface does not
+//      cross (OctreeRefinement, SingleManifoldCondition, LeafSurfacePatch)
 //   3. fill: each leaf becomes cells, labelled as it is made (LeafFill)
 //   4. boundary: faces between different materials (MeshBoundary)
 //
@@ -18,6 +18,7 @@
 #include "LabelOctreeMesher.h"
 
 #include "LabelPyramid.h"
+#include "LatticeLabels.h"
 #include "LeafFill.h"
 #include "LeafSurfacePatch.h"
 #include "MeshBoundary.h"
@@ -106,49 +107,19 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
   const LabelPyramid pyramid(image, depth);
   clock.Finish("label pyramid");
 
-  // A proper boundary leaf is kept only if it passes the single manifold
-  // condition and the fidelity test, and if every same-size block across its
-  // faces and edges would be kept too: otherwise that neighbour is split, and
-  // the rule that proper leaves meet only same-size leaves splits this one in
-  // a later round anyway. Looking one neighbour ahead saves most of those
-  // rounds (each is a balance and a pass over the forest).
-  const int cubeSide = 1 << depth;
-  const auto proper = [&](const LeafBox& leaf, const LabelSummary& labels) {
-    return SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second) &&
-      SatisfiesFidelity(image, leaf, labels.Second, parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
-  };
-  const auto kept = [&](const LeafBox& leaf) {
-    const LabelSummary labels = pyramid.Block(Log2(leaf.Size), leaf.Origin[0], leaf.Origin[1], leaf.Origin[2]);
-    return labels.IsUniform() || (!labels.HasMoreThanTwo() && proper(leaf, labels));
-  };
-  const auto neighboursKept = [&](const LeafBox& leaf) {
-    const int reach = dimension == 3 ? 1 : 0;
-    for (int dz = -reach; dz <= reach; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          const int moved = (dx != 0) + (dy != 0) + (dz != 0);
-          if (moved == 0 || moved == 3)
-            continue; // itself, or a corner neighbour (no rule across corners)
-          LeafBox next = leaf;
-          next.Origin = { leaf.Origin[0] + dx * leaf.Size, leaf.Origin[1] + dy * leaf.Size,
-            leaf.Origin[2] + dz * leaf.Size };
-          bool inside = true;
-          for (int d = 0; d < dimension; ++d)
-            inside = inside && next.Origin[d] >= 0 && next.Origin[d] < cubeSide;
-          if (inside && !kept(next))
-            return false;
-        }
-    return true;
-  };
   const LeafEvaluator evaluate = [&](const LeafBox& leaf) {
     const LabelSummary labels = pyramid.Block(Log2(leaf.Size), leaf.Origin[0], leaf.Origin[1], leaf.Origin[2]);
     if (labels.HasMoreThanTwo())
-      return LeafVerdict{ true, 0, 0 };
+      return LeafVerdict{ true, 0, 0, 0 };
     if (labels.IsUniform())
-      return LeafVerdict{ false, labels.First, labels.First };
-    const bool accepted = proper(leaf, labels) && neighboursKept(leaf);
-    return LeafVerdict{ !accepted, labels.First, labels.Second };
+      return LeafVerdict{ false, labels.First, labels.First, 0 };
+    const bool accepted = SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second) &&
+      SatisfiesFidelity(image, leaf, labels.First, labels.Second, parameters.ImageToMeshDistance,
+        parameters.MeshToImageDistance);
+    if (!accepted)
+      return LeafVerdict{ true, 0, 0, 0 };
+    const CornerSigns signs = LeafCornerSigns(image, leaf, labels.First, labels.Second);
+    return LeafVerdict{ false, labels.First, labels.Second, static_cast<std::uint8_t>(RigidFaces(signs, dimension)) };
   };
   const std::vector<OctreeLeaf> leaves = BuildOctree(dimension, depth, evaluate, observer, 0.1, 0.6);
   result.NumberOfLeaves = leaves.size();

@@ -56,6 +56,34 @@ inline int CubeEdgeThrough(int axis, const std::array<int, 3>& bits)
   return CubeEdge(axis, bits[others[0]], bits[others[1]]);
 }
 
+/// Cube corner of corner q (bit 0: high along the face's first axis, bit 1:
+/// along its second) of cube face `face` (= 2 axis + side).
+inline int FaceCornerToCube(int face, int q)
+{
+  const int axis = face / 2, side = face % 2;
+  const auto others = OtherAxes(axis);
+  return (side << axis) | ((q & 1) << others[0]) | ((q >> 1) << others[1]);
+}
+
+/// Cube edge of edge e of cube face `face`; face edges run 0: b = 0, 1: a = 1,
+/// 2: b = 1, 3: a = 0 (a, b: the face's first and second axes).
+inline int FaceEdgeToCube(int face, int e)
+{
+  const int axis = face / 2, side = face % 2;
+  const auto others = OtherAxes(axis);
+  std::array<int, 3> bits{ 0, 0, 0 };
+  bits[axis] = side;
+  const int along = (e % 2 == 0) ? others[0] : others[1];
+  const int fixedAxis = (e % 2 == 0) ? others[1] : others[0];
+  bits[fixedAxis] = (e == 1 || e == 2) ? 1 : 0;
+  return CubeEdgeThrough(along, bits);
+}
+
+/// The four corners of a square (or of a cube face, as face corners) in
+/// counter-clockwise ring order; ring side i joins kRingCorners[i] to
+/// kRingCorners[i + 1] and is face edge i.
+constexpr int kRingCorners[4] = { 0, 1, 3, 2 };
+
 /// An octree leaf after refinement, with what its neighbours impose on it.
 struct OctreeLeaf
 {

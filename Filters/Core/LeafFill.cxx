@@ -2,7 +2,7 @@
 #include "LeafFill.h"
 
 #include "FaceTriangulation.h"
-#include "LeafSurfacePatch.h"
+#include "LatticeLabels.h"
 
 #include <stdexcept>
 
@@ -18,12 +18,15 @@ LatticePoint LeafLattice(const LeafBox& leaf, int hx, int hy, int hz)
   return { leaf.Low(0) + hx * s, leaf.Low(1) + hy * s, leaf.Low(2) + hz * s };
 }
 
-std::int32_t LabelOf(const OctreeLeaf& leaf, unsigned cornerBits, int corner)
+/// The label of a labelled (non-0) corner of a proper leaf.
+std::int32_t LabelOf(const OctreeLeaf& leaf, const CornerSigns& signs, int corner)
 {
-  return ((cornerBits >> corner) & 1u) ? leaf.Second : leaf.First;
+  if (signs[corner] == 0)
+    throw std::logic_error("a cell takes its material from a 0-corner");
+  return signs[corner] > 0 ? leaf.First : leaf.Second;
 }
 
-void FillSquare(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
+void FillSquare(const OctreeLeaf& leaf, const CornerSigns& signs, MeshAssembler& mesh)
 {
   const LeafBox& box = leaf.Box;
   auto corner = [&](int c) { return LeafLattice(box, 2 * (c & 1), 2 * ((c >> 1) & 1), 0); };
@@ -31,8 +34,10 @@ void FillSquare(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh
   auto hasMidpoint = [&](int face) {
     const int axis = face / 2, side = face % 2, other = 1 - axis;
     const int c0 = side << axis, c1 = c0 | (1 << other);
-    const bool crossed = proper && ((cornerBits >> c0) & 1u) != ((cornerBits >> c1) & 1u);
-    return crossed || ((leaf.EdgeMidpoints >> face) & 1u);
+    const bool hanging = (leaf.EdgeMidpoints >> face) & 1u;
+    if (proper && hanging && signs[c0] * signs[c1] <= 0)
+      throw std::logic_error("a finer leaf meets a rigid side; the octree rules exclude this");
+    return hanging || (proper && signs[c0] * signs[c1] < 0);
   };
   bool any = false;
   for (int f = 0; f < 4; ++f)
@@ -63,12 +68,14 @@ void FillSquare(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh
   {
     const RingPoint& p = ring[i];
     const RingPoint& q = ring[(i + 1) % ring.size()];
-    const int c = p.Corner >= 0 ? p.Corner : q.Corner;
-    mesh.AddCell({ centre, p.Point, q.Point, {} }, proper ? LabelOf(leaf, cornerBits, c) : leaf.First);
+    // Its material: a labelled corner among its two ring points (a midpoint
+    // sits between corners of both labels; 0-corners are never adjacent).
+    const int c = (p.Corner >= 0 && (!proper || signs[p.Corner] != 0)) ? p.Corner : q.Corner;
+    mesh.AddCell({ centre, p.Point, q.Point, {} }, proper ? LabelOf(leaf, signs, c) : leaf.First);
   }
 }
 
-void FillCube(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
+void FillCube(const OctreeLeaf& leaf, const CornerSigns& signs, MeshAssembler& mesh)
 {
   const LeafBox& box = leaf.Box;
   const bool proper = leaf.IsProper();
@@ -89,31 +96,31 @@ void FillCube(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
   {
     const int axis = face / 2, side = face % 2;
     const auto others = OtherAxes(axis);
-    auto cubeCorner = [&](int q) { return (side << axis) | ((q & 1) << others[0]) | ((q >> 1) << others[1]); };
-    // Face edges 0..3 (b = 0, a = 4, b = 4, a = 0) as cube edges.
     unsigned midpointMask = 0;
     for (int e = 0; e < 4; ++e)
-    {
-      std::array<int, 3> bits{ 0, 0, 0 };
-      bits[axis] = side;
-      const int along = (e % 2 == 0) ? others[0] : others[1];
-      const int fixedAxis = (e % 2 == 0) ? others[1] : others[0];
-      bits[fixedAxis] = (e == 1 || e == 2) ? 1 : 0;
-      if ((leaf.EdgeMidpoints >> CubeEdgeThrough(along, bits)) & 1u)
+      if ((leaf.EdgeMidpoints >> FaceEdgeToCube(face, e)) & 1u)
         midpointMask |= 1u << e;
-    }
     const bool split = (leaf.SplitFaces >> face) & 1u;
-    unsigned faceBits = 0;
+    unsigned negative = 0, zero = 0;
+    int labelledCorner = -1;
     for (int q = 0; q < 4; ++q)
-      faceBits |= ((cornerBits >> cubeCorner(q)) & 1u) << q;
+    {
+      const int sign = signs[FaceCornerToCube(face, q)];
+      negative |= (sign < 0 ? 1u : 0u) << q;
+      zero |= (sign == 0 ? 1u : 0u) << q;
+      if (sign != 0 && labelledCorner < 0)
+        labelledCorner = q;
+    }
 
     FaceKind kind = split ? FaceKind::Split : (midpointMask ? FaceKind::Fan : FaceKind::Plain);
-    if (proper && faceBits != 0 && faceBits != 15)
+    if (proper && IsCrossedFace(negative, zero))
       kind = FaceKind::Crossed;
-    if (proper && (split || midpointMask))
-      throw std::logic_error("a proper boundary leaf meets a finer leaf; the octree rules exclude this");
+    if (kind == FaceKind::Crossed && (split || midpointMask))
+      throw std::logic_error("a finer leaf meets a crossed face; the octree rules exclude this");
+    if (proper && labelledCorner < 0)
+      throw std::logic_error("a proper boundary leaf with a face of 0-corners only");
     const std::int64_t extent = box.Extent();
-    for (const FaceTriangle& t : TriangulateFace(kind, midpointMask, faceBits))
+    for (const FaceTriangle& t : TriangulateFace(kind, midpointMask, negative, zero))
     {
       std::array<LatticePoint, 4> cell;
       for (int i = 0; i < 3; ++i)
@@ -125,7 +132,10 @@ void FillCube(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
         cell[i] = p;
       }
       cell[3] = centre;
-      mesh.AddCell(cell, proper ? LabelOf(leaf, cornerBits, cubeCorner(t.SideCorner)) : leaf.First);
+      // Crossed faces name the labelled corner of each triangle's side; the
+      // other faces lie on one side, that of any labelled corner.
+      const int q = kind == FaceKind::Crossed ? t.SideCorner : labelledCorner;
+      mesh.AddCell(cell, proper ? LabelOf(leaf, signs, FaceCornerToCube(face, q)) : leaf.First);
     }
   }
 }
@@ -134,11 +144,12 @@ void FillCube(const OctreeLeaf& leaf, unsigned cornerBits, MeshAssembler& mesh)
 
 void FillLeaf(const LabelImage& image, const OctreeLeaf& leaf, MeshAssembler& mesh)
 {
-  const unsigned cornerBits = leaf.IsProper() ? CornerLabelBits(image, leaf.Box, leaf.Second) : 0u;
+  const CornerSigns signs =
+    leaf.IsProper() ? LeafCornerSigns(image, leaf.Box, leaf.First, leaf.Second) : CornerSigns{};
   if (leaf.Box.Dimension == 2)
-    FillSquare(leaf, cornerBits, mesh);
+    FillSquare(leaf, signs, mesh);
   else
-    FillCube(leaf, cornerBits, mesh);
+    FillCube(leaf, signs, mesh);
 }
 
 } // namespace labelmesher

@@ -21,89 +21,108 @@ Point3 LeafPoint(const LeafBox& leaf, int hx, int hy, int hz)
   return FromDoubled(leaf.Low(0) + hx * s, leaf.Low(1) + hy * s, leaf.Low(2) + hz * s, leaf.Dimension);
 }
 
-} // namespace
-
-unsigned CornerLabelBits(const LabelImage& image, const LeafBox& leaf, std::int32_t second)
+/// The face of voxel `centre` at half a voxel along `axis` in direction
+/// `step` (a pixel edge in 2D).
+ConvexPiece VoxelFace(int dimension, Point3 centre, int axis, int step)
 {
-  unsigned bits = 0;
-  const int corners = leaf.Dimension == 2 ? 4 : 8;
-  for (int c = 0; c < corners; ++c)
+  centre[axis] += 0.5 * step;
+  if (dimension == 2)
   {
-    const auto v = leaf.CornerVoxel(c);
-    if (image.At(v[0], v[1], v[2]) == second)
-      bits |= 1u << c;
+    Point3 a = centre, b = centre;
+    a[1 - axis] -= 0.5;
+    b[1 - axis] += 0.5;
+    return ConvexPiece{ 2, { a, b } };
   }
-  return bits;
+  const auto others = OtherAxes(axis);
+  ConvexPiece square{ 4, {} };
+  const int order[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+  for (int c = 0; c < 4; ++c)
+  {
+    Point3 p = centre;
+    p[others[0]] += 0.5 * order[c][0];
+    p[others[1]] += 0.5 * order[c][1];
+    square.Points[c] = p;
+  }
+  return square;
 }
 
-std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, unsigned cornerBits)
+} // namespace
+
+std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns& signs)
 {
   std::vector<ConvexPiece> patch;
   const Point3 centre = LeafPoint(leaf, 1, 1, leaf.Dimension == 2 ? 0 : 1);
-  auto bit = [&](int c) { return (cornerBits >> c) & 1u; };
+  std::array<int, 8> where{};
   if (leaf.Dimension == 2)
   {
-    // Sides (faces) f = 2 axis + side; their ends are corners differing in the other axis.
-    for (int axis = 0; axis < 2; ++axis)
-      for (int side = 0; side < 2; ++side)
-      {
-        const int other = 1 - axis;
-        const int c0 = side << axis, c1 = c0 | (1 << other);
-        if (bit(c0) == bit(c1))
-          continue;
-        int h[2];
-        h[axis] = 2 * side;
-        h[other] = 1;
-        patch.push_back(ConvexPiece{ 2, { centre, LeafPoint(leaf, h[0], h[1], 0) } });
-      }
-    if (patch.size() != 2)
-      patch.clear();
+    // The square's own ring: sides y = 0, x = 1, y = 1, x = 0.
+    const std::array<int, 4> ring{ signs[kRingCorners[0]], signs[kRingCorners[1]], signs[kRingCorners[2]],
+      signs[kRingCorners[3]] };
+    if (RingTransitions(ring, where) != 2)
+      return {};
+    // A 0-corner off the polygon would be image boundary the patch misses.
+    for (int i = 0; i < 4; ++i)
+      if (ring[i] == 0 && where[0] != 2 * i && where[1] != 2 * i)
+        return {};
+    const int halves[8][2] = { { 0, 0 }, { 1, 0 }, { 2, 0 }, { 2, 1 }, { 2, 2 }, { 1, 2 }, { 0, 2 }, { 0, 1 } };
+    for (int t = 0; t < 2; ++t)
+      patch.push_back(ConvexPiece{ 2, { centre, LeafPoint(leaf, halves[where[t]][0], halves[where[t]][1], 0) } });
     return patch;
   }
-  // 3D: crossed cube edges are the intersection vertices; each crossed face
-  // joins its two crossed edges.
-  std::vector<int> crossedEdges[6];
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side)
-    {
-      const auto others = OtherAxes(axis);
-      for (int e = 0; e < 2; ++e)
-        for (int b = 0; b < 2; ++b)
-        {
-          std::array<int, 3> bits{ 0, 0, 0 };
-          bits[axis] = side;
-          bits[others[1 - e]] = b;
-          const int c0 = (bits[0]) | (bits[1] << 1) | (bits[2] << 2);
-          const int c1 = c0 | (1 << others[e]);
-          if (bit(c0) != bit(c1))
-            crossedEdges[2 * axis + side].push_back(CubeEdgeThrough(others[e], bits));
-        }
-    }
+  // 3D: each crossed face joins its two transition points; a point is a cube
+  // edge (its midpoint, node e) or a cube corner (node 12 + c).
   std::vector<std::array<int, 2>> segments;
-  for (const auto& edges : crossedEdges)
+  for (int face = 0; face < 6; ++face)
   {
-    if (edges.size() == 2)
-      segments.push_back({ edges[0], edges[1] });
-    else if (!edges.empty())
-      return {}; // a saddle: excluded by the single manifold condition
+    std::array<int, 4> ring;
+    for (int i = 0; i < 4; ++i)
+      ring[i] = signs[FaceCornerToCube(face, kRingCorners[i])];
+    const int count = RingTransitions(ring, where);
+    if (count == 0)
+      continue;
+    if (count != 2)
+      return {}; // a saddle
+    std::array<int, 2> segment;
+    for (int t = 0; t < 2; ++t)
+      segment[t] = where[t] % 2 ? FaceEdgeToCube(face, where[t] / 2)
+                                : 12 + FaceCornerToCube(face, kRingCorners[where[t] / 2]);
+    segments.push_back(segment);
   }
-  if (segments.size() < 3)
+  if (segments.size() < 2)
     return {};
-  // One closed polygon: every crossed edge is in two segments, and all connect.
-  std::vector<int> parent(12);
+  // One simple closed polygon: every point on it has two segments, all connect.
+  int degree[20] = {};
+  std::vector<int> parent(20);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int x) {
     while (parent[x] != x)
       x = parent[x];
     return x;
   };
-  for (const auto& s : segments)
-    parent[find(s[0])] = find(s[1]);
-  for (const auto& s : segments)
-    if (find(s[0]) != find(segments[0][0]))
+  for (const auto& seg : segments)
+  {
+    ++degree[seg[0]];
+    ++degree[seg[1]];
+    parent[find(seg[0])] = find(seg[1]);
+  }
+  for (int node = 0; node < 20; ++node)
+    if (degree[node] != 0 && degree[node] != 2)
       return {};
-  auto midpoint = [&](int edge) {
-    const int axis = edge / 4, lowBit = edge & 1, highBit = (edge >> 1) & 1;
+  // Every 0-corner is a vertex of the polygon: one off it would be image
+  // boundary that the patch misses.
+  for (int c = 0; c < 8; ++c)
+    if (signs[c] == 0 && degree[12 + c] != 2)
+      return {};
+  for (const auto& seg : segments)
+    if (find(seg[0]) != find(segments[0][0]))
+      return {};
+  auto position = [&](int node) {
+    if (node >= 12)
+    {
+      const int c = node - 12;
+      return LeafPoint(leaf, 2 * (c & 1), 2 * ((c >> 1) & 1), 2 * ((c >> 2) & 1));
+    }
+    const int axis = node / 4, lowBit = node & 1, highBit = (node >> 1) & 1;
     const auto others = OtherAxes(axis);
     int h[3];
     h[axis] = 1;
@@ -111,8 +130,8 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, unsigned cornerBi
     h[others[1]] = 2 * highBit;
     return LeafPoint(leaf, h[0], h[1], h[2]);
   };
-  for (const auto& s : segments)
-    patch.push_back(ConvexPiece{ 3, { centre, midpoint(s[0]), midpoint(s[1]) } });
+  for (const auto& seg : segments)
+    patch.push_back(ConvexPiece{ 3, { centre, position(seg[0]), position(seg[1]) } });
   return patch;
 }
 
@@ -124,49 +143,27 @@ std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const Leaf
     for (int j = 0; j < s; ++j)
       for (int i = 0; i < s; ++i)
       {
+        const int local[3] = { i, j, k };
         const int x = leaf.Origin[0] + i, y = leaf.Origin[1] + j, z = leaf.Origin[2] + k;
         const std::int32_t here = image.At(x, y, z);
         for (int axis = 0; axis < leaf.Dimension; ++axis)
-        {
-          int next[3] = { i, j, k };
-          if (++next[axis] >= s)
-            continue;
-          int n[3] = { x, y, z };
-          ++n[axis];
-          if (image.At(n[0], n[1], n[2]) == here)
-            continue;
-          // The face at +1/2 along `axis` from voxel (x, y, z).
-          Point3 base{ double(x), double(y), double(z) };
-          base[axis] += 0.5;
-          if (leaf.Dimension == 2)
+          // The face at +1/2 along `axis`, and at -1/2 on the leaf's low side:
+          // each face of the closed leaf once.
+          for (int step = local[axis] == 0 ? -1 : 1; step <= 1; step += 2)
           {
-            const int other = 1 - axis;
-            Point3 a = base, b = base;
-            a[other] -= 0.5;
-            b[other] += 0.5;
-            pieces.push_back(ConvexPiece{ 2, { a, b } });
-            continue;
+            int n[3] = { x, y, z };
+            n[axis] += step;
+            if (image.At(n[0], n[1], n[2]) != here)
+              pieces.push_back(VoxelFace(leaf.Dimension, { double(x), double(y), double(z) }, axis, step));
           }
-          const auto others = OtherAxes(axis);
-          ConvexPiece square{ 4, {} };
-          const int order[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
-          for (int c = 0; c < 4; ++c)
-          {
-            Point3 p = base;
-            p[others[0]] += 0.5 * order[c][0];
-            p[others[1]] += 0.5 * order[c][1];
-            square.Points[c] = p;
-          }
-          pieces.push_back(square);
-        }
       }
   return pieces;
 }
 
-bool SatisfiesFidelity(
-  const LabelImage& image, const LeafBox& leaf, std::int32_t second, double imageToMesh, double meshToImage)
+bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second,
+  double imageToMesh, double meshToImage)
 {
-  const std::vector<ConvexPiece> patch = ConeSurfacePatch(leaf, CornerLabelBits(image, leaf, second));
+  const std::vector<ConvexPiece> patch = ConeSurfacePatch(leaf, LeafCornerSigns(image, leaf, first, second));
   if (patch.empty())
     return false;
   const std::vector<ConvexPiece> boundary = ImageBoundaryInLeaf(image, leaf);

@@ -16,6 +16,7 @@
 
 #include "DistanceBound.h"
 #include "LabelImage.h"
+#include "LatticeLabels.h"
 #include "LeafBox.h"
 
 #include <vector>
@@ -23,19 +24,19 @@
 namespace labelmesher
 {
 
-/// Corner c of the leaf carries the second label (bit c set) or the first.
-unsigned CornerLabelBits(const LabelImage& image, const LeafBox& leaf, std::int32_t second);
+/// The cone patch: triangles (3D) or segments (2D) from the leaf centre to the
+/// intersection polygon through 0-corners and the midpoints of edges with ends
+/// of different labels; empty unless that polygon is one simple closed loop
+/// through every 0-corner (3D) or one pair of points (2D).
+std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns& signs);
 
-/// The cone patch: triangles (3D) or segments (2D); empty if the intersection
-/// edges do not form exactly one closed polygon (3D) or one pair of points (2D).
-std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, unsigned cornerBits);
-
-/// The voxel faces (pixel edges in 2D) between the two labels inside the leaf.
+/// The image boundary in the closed leaf: voxel faces (pixel edges in 2D)
+/// between different labels inside it and on its boundary.
 std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf);
 
 /// h(B_L, S_L) <= imageToMesh and h(S_L, B_L) <= meshToImage.
-bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t second, double imageToMesh,
-  double meshToImage);
+bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second,
+  double imageToMesh, double meshToImage);
 
 } // namespace labelmesher
 

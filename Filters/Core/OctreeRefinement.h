@@ -10,13 +10,14 @@
  * A leaf is split while the caller's evaluator says so (more than two labels,
  * single manifold condition, fidelity), the forest is kept 2:1 balanced across
  * faces and edges (p4est_balance, P8EST_CONNECT_EDGE; faces in 2D), and a leaf
- * is split when it is larger than a face- or edge-neighbour while either of
- * them is a proper boundary leaf: proper boundary leaves then meet only leaves
- * of their own size across every face and edge they share, so intersection
+ * larger than a proper boundary face- or edge-neighbour is split: intersection
  * vertices never become quarter points of a larger leaf (the configuration
- * that breaks the 19.47 degree claim, see reference/NOTES.md). Refinement and
- * balance alternate until nothing changes; it ends because single voxels are
- * never split.
+ * that breaks the 19.47 degree claim, see reference/NOTES.md), and the faces a
+ * proper leaf's surface crosses (its rigid faces) never carry points of finer
+ * leaves. A proper leaf may meet finer uniform leaves across its other faces
+ * and edges: those are filled like a uniform leaf's. Refinement and balance
+ * alternate until nothing changes; it ends because single voxels are never
+ * split.
  */
 
 #include "LeafBox.h"
@@ -32,6 +33,10 @@ struct LeafVerdict
 {
   bool Refine = false;
   std::int32_t First = 0, Second = 0; ///< labels held, when not refined
+  /// Proper leaves: the faces (3D) or sides (2D) that may not carry a point of
+  /// a finer neighbour, because the surface crosses them (their stencil has no
+  /// room for hanging points).
+  std::uint8_t RigidFaces = 0;
 };
 using LeafEvaluator = std::function<LeafVerdict(const LeafBox&)>;
 

@@ -28,6 +28,7 @@ struct QuadrantData
   std::int32_t Second;
   std::uint16_t EdgeMidpoints;
   std::uint8_t SplitFaces;
+  std::uint8_t RigidFaces;
   LeafState State;
 };
 
@@ -66,7 +67,7 @@ LeafBox BoxOf(const p4est_quadrant_t* q, int depth)
 
 void InitializeQuadrant(p4est_t*, p4est_topidx_t, p4est_quadrant_t* q)
 {
-  Data(q) = QuadrantData{ 0, 0, 0, 0, LeafState::Unevaluated };
+  Data(q) = QuadrantData{ 0, 0, 0, 0, 0, LeafState::Unevaluated };
 }
 
 /// Evaluates a leaf once; returns true when it must be split.
@@ -98,6 +99,7 @@ bool EvaluateLeaf(ForestContext& context, p4est_quadrant_t* q)
   }
   data.First = verdict.First;
   data.Second = verdict.Second;
+  data.RigidFaces = verdict.RigidFaces;
   data.State = LeafState::Accepted;
   return false;
 }
@@ -124,8 +126,7 @@ void Mark(ForestContext& context, p4est_quadrant_t* q)
   }
 }
 
-/// Quadrants around a face or edge, the finest level among them, and whether
-/// any of them is a proper boundary leaf. At most eight quadrants touch a face
+/// Quadrants around a face or edge and the finest level among them. At most eight quadrants touch a face
 /// (1 + 4) or an edge (4 sides of up to 2): a fixed array, no allocation.
 template <typename Side, int Hanging>
 struct Neighbourhood
@@ -133,7 +134,6 @@ struct Neighbourhood
   std::array<p4est_quadrant_t*, 8> Quadrants{};
   int Count = 0;
   int FinestLevel = -1;
-  bool AnyProper = false;
 
   explicit Neighbourhood(sc_array_t& sides)
   {
@@ -155,26 +155,54 @@ struct Neighbourhood
       return;
     Quadrants[Count++] = q;
     FinestLevel = std::max(FinestLevel, static_cast<int>(q->level));
-    AnyProper = AnyProper || Data(q).First != Data(q).Second;
   }
 };
 
-/// Proper boundary leaves must meet leaves of their own size across faces and
-/// edges: split the larger ones (see OctreeRefinement.h).
-template <typename Hood>
-void MarkLargerAroundProper(ForestContext& context, const Hood& hood)
+bool IsProper(p4est_quadrant_t* q) { return Data(q).First != Data(q).Second; }
+
+/// Around a face or edge where leaves of different sizes meet: a leaf larger
+/// than a proper one is split (an intersection vertex would be its quarter
+/// point), and so is a proper leaf whose rigid faces would receive the finer
+/// leaves' points. `touched(q)` gives the faces of the larger leaf q that get
+/// those points.
+template <typename Hood, typename TouchedFaces>
+void MarkAroundSizeChange(ForestContext& context, const Hood& hood, TouchedFaces&& touched)
 {
-  if (!hood.AnyProper)
-    return;
+  bool finerProper = false;
   for (int i = 0; i < hood.Count; ++i)
-    if (hood.Quadrants[i]->level < hood.FinestLevel)
-      Mark(context, hood.Quadrants[i]);
+    finerProper = finerProper || (hood.Quadrants[i]->level == hood.FinestLevel && IsProper(hood.Quadrants[i]));
+  for (int i = 0; i < hood.Count; ++i)
+  {
+    p4est_quadrant_t* q = hood.Quadrants[i];
+    if (q->level >= hood.FinestLevel)
+      continue;
+    if (finerProper || (IsProper(q) && (Data(q).RigidFaces & touched(q)) != 0))
+      Mark(context, q);
+  }
 }
 
 void CheckFace(p4est_iter_face_info_t* info, void*)
 {
   ForestContext& context = Context(info->p4est);
-  MarkLargerAroundProper(context, Neighbourhood<p4est_iter_face_side_t, P4EST_HALF>(info->sides));
+  const Neighbourhood<p4est_iter_face_side_t, P4EST_HALF> hood(info->sides);
+  if (hood.Count < 2)
+    return;
+  // A split face puts points on the face and on its edges: every face of the
+  // larger leaf but the opposite one.
+  int face = -1;
+  for (std::size_t s = 0; s < info->sides.elem_count; ++s)
+  {
+    auto* side = static_cast<p4est_iter_face_side_t*>(sc_array_index(&info->sides, s));
+    if (!side->is_hanging)
+      face = side->face;
+  }
+  MarkAroundSizeChange(context, hood, [face](p4est_quadrant_t*) {
+#ifdef P4_TO_P8
+    return static_cast<unsigned>(0x3f & ~(1u << (face ^ 1)));
+#else
+    return static_cast<unsigned>(1u << face);
+#endif
+  });
 }
 
 void RecordFace(p4est_iter_face_info_t* info, void*)
@@ -212,7 +240,26 @@ void RecordFace(p4est_iter_face_info_t* info, void*)
 void CheckEdge(p8est_iter_edge_info_t* info, void*)
 {
   ForestContext& context = Context(info->p4est);
-  MarkLargerAroundProper(context, Neighbourhood<p8est_iter_edge_side_t, 2>(info->sides));
+  const Neighbourhood<p8est_iter_edge_side_t, 2> hood(info->sides);
+  // The larger leaves get a midpoint on this edge: on the two faces holding it.
+  std::array<std::pair<p4est_quadrant_t*, unsigned>, 4> faces{};
+  std::size_t count = 0;
+  for (std::size_t s = 0; s < info->sides.elem_count && count < faces.size(); ++s)
+  {
+    auto* side = static_cast<p8est_iter_edge_side_t*>(sc_array_index(&info->sides, s));
+    if (side->is_hanging || !side->is.full.quad)
+      continue;
+    const int edge = side->edge, axis = edge / 4;
+    const auto others = OtherAxes(axis);
+    faces[count++] = { side->is.full.quad,
+      (1u << (2 * others[0] + (edge & 1))) | (1u << (2 * others[1] + ((edge >> 1) & 1))) };
+  }
+  MarkAroundSizeChange(context, hood, [&](p4est_quadrant_t* q) {
+    for (std::size_t i = 0; i < count; ++i)
+      if (faces[i].first == q)
+        return faces[i].second;
+    return 0u;
+  });
 }
 
 void RecordEdge(p8est_iter_edge_info_t* info, void*)

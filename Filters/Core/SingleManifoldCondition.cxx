@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "SingleManifoldCondition.h"
 
+#include "LatticeLabels.h"
+
 #include <cstdlib>
 #include <numeric>
 #include <vector>
@@ -36,46 +38,6 @@ public:
 private:
   std::vector<unsigned char> Bits;
 };
-
-bool FacesAreClean(const LabelImage& image, const LeafBox& leaf)
-{
-  const int s = leaf.Size;
-  for (int axis = 0; axis < leaf.Dimension; ++axis)
-  {
-    const auto others = OtherAxes(axis);
-    const int spanB = leaf.Dimension == 2 ? 1 : s;
-    for (int side = 0; side < 2; ++side)
-      for (int b = 0; b < spanB; ++b)
-        for (int a = 0; a < s; ++a)
-        {
-          std::array<int, 3> in = leaf.Origin;
-          in[axis] += side ? s - 1 : 0;
-          in[others[0]] += a;
-          if (leaf.Dimension == 3)
-            in[others[1]] += b;
-          std::array<int, 3> out = in;
-          out[axis] += side ? 1 : -1;
-          if (image.At(in[0], in[1], in[2]) != image.At(out[0], out[1], out[2]))
-            return false;
-        }
-  }
-  return true;
-}
-
-/// Number of label changes along the line of voxels from `start` stepping `step`.
-int Transitions(const LocalLabels& local, std::array<int, 3> p, const std::array<int, 3>& step, int n)
-{
-  int count = 0, previous = local(p);
-  for (int t = 1; t < n; ++t)
-  {
-    for (int d = 0; d < 3; ++d)
-      p[d] += step[d];
-    const int v = local(p);
-    count += v != previous;
-    previous = v;
-  }
-  return count;
-}
 
 struct UnionFind
 {
@@ -121,76 +83,152 @@ bool FaceLayerIsOneArc(const std::vector<unsigned char>& layer, int n)
   return components <= 2; // one region per label (a uniform layer has one)
 }
 
-bool EdgesAndFacesAreSimple(const LocalLabels& local, const LeafBox& leaf)
+/// Signs (+1 first label, -1 second, 0 on the boundary) of the lattice points
+/// on the leaf's boundary; lattice point (a, b, c) is the leaf corner (0, 0, 0)
+/// moved by that many voxels.
+class BoundarySigns
 {
-  const int s = leaf.Size;
-  // Edges: at most one change of label along each (Figure 9a).
+public:
+  BoundarySigns(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second)
+    : Image(image)
+    , Leaf(leaf)
+    , First(first)
+    , Second(second)
+  {
+  }
+  int operator()(int a, int b, int c) const
+  {
+    return SignOf(LatticeLabel(Image, Leaf.Origin[0] + a, Leaf.Origin[1] + b,
+                    Leaf.Dimension == 2 ? 0 : Leaf.Origin[2] + c),
+      First, Second);
+  }
+
+private:
+  const LabelImage& Image;
+  const LeafBox& Leaf;
+  std::int32_t First, Second;
+};
+
+/// Along one leaf edge the image boundary is empty (both ends of one label),
+/// one run of boundary points between ends of different labels, or one run
+/// starting at a 0-end. Two runs (Figure 9a), or two 0-ends, fail.
+bool EdgeIsSimple(const std::vector<int>& signs)
+{
+  std::vector<int> runs;
+  for (int v : signs)
+    if (runs.empty() || runs.back() != v)
+      runs.push_back(v);
+  if (runs.size() == 1)
+    return runs[0] != 0;
+  if (runs.size() == 2)
+    return (runs[0] == 0) != (runs[1] == 0);
+  return runs.size() == 3 && runs[1] == 0 && runs[0] != 0 && runs[2] != 0 && runs[0] != runs[2];
+}
+
+/// Components of the lattice points of class `value` on an n x n face grid
+/// (4-connected, or 8-connected for the boundary class 0).
+int Components(const std::vector<int>& grid, int n, int value)
+{
+  UnionFind uf(grid.size());
+  const bool eight = value == 0;
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a)
+    {
+      if (grid[b * n + a] != value)
+        continue;
+      for (int db = 0; db <= 1; ++db)
+        for (int da = -1; da <= 1; ++da)
+        {
+          if ((db == 0 && da <= 0) || (!eight && da != 0 && db != 0))
+            continue;
+          const int na = a + da, nb = b + db;
+          if (na >= 0 && na < n && nb < n && grid[nb * n + na] == value)
+            uf.Unite(b * n + a, nb * n + na);
+        }
+    }
+  int count = 0;
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    count += grid[i] == value && uf.Find(i) == i;
+  return count;
+}
+
+/// Edges and faces of the leaf meet the image boundary as the cone patch will:
+/// every edge simply (EdgeIsSimple); every face either not crossed (corners of
+/// one label, possibly 0-corners), with no boundary point inside it, or
+/// crossed once, with no two adjacent 0-corners, with the boundary points one
+/// 8-connected set separating one 4-connected set of each label, and every
+/// 0-corner of the leaf a transition of the intersection polygon (checked
+/// with the polygon, ConeSurfacePatch). 2D: the sides, and two transitions.
+bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
+{
+  const int s = leaf.Size, n = s + 1;
+  std::vector<int> line(n);
   if (leaf.Dimension == 2)
   {
-    int perimeterChanges = 0;
     for (int axis = 0; axis < 2; ++axis)
       for (int side = 0; side < 2; ++side)
       {
-        std::array<int, 3> start{ 0, 0, 0 }, step{ 0, 0, 0 };
-        start[axis] = side ? s - 1 : 0;
-        step[1 - axis] = 1;
-        const int t = Transitions(local, start, step, s);
-        if (t > 1)
+        for (int t = 0; t < n; ++t)
+          line[t] = axis == 0 ? sign(side * s, t, 0) : sign(t, side * s, 0);
+        if (!EdgeIsSimple(line))
           return false;
-        perimeterChanges += t;
       }
-    return perimeterChanges == 2; // 0 would be an island (Figure 9b), 4 a saddle
+    return true;
   }
-  int edgeChanges[12];
   for (int axis = 0; axis < 3; ++axis)
   {
     const auto others = OtherAxes(axis);
     for (int hi = 0; hi < 2; ++hi)
       for (int lo = 0; lo < 2; ++lo)
       {
-        std::array<int, 3> start{ 0, 0, 0 }, step{ 0, 0, 0 };
-        start[others[0]] = lo ? s - 1 : 0;
-        start[others[1]] = hi ? s - 1 : 0;
-        step[axis] = 1;
-        const int t = Transitions(local, start, step, s);
-        if (t > 1)
+        for (int t = 0; t < n; ++t)
+        {
+          int p[3];
+          p[axis] = t;
+          p[others[0]] = lo * s;
+          p[others[1]] = hi * s;
+          line[t] = sign(p[0], p[1], p[2]);
+        }
+        if (!EdgeIsSimple(line))
           return false;
-        edgeChanges[CubeEdge(axis, lo, hi)] = t;
       }
   }
-  // Faces: one simple arc or uniform (no island, no saddle).
-  std::vector<unsigned char> layer(static_cast<std::size_t>(s) * s);
-  for (int axis = 0; axis < 3; ++axis)
+  std::vector<int> grid(static_cast<std::size_t>(n) * n);
+  for (int face = 0; face < 6; ++face)
   {
+    const int axis = face / 2, side = face % 2;
     const auto others = OtherAxes(axis);
-    for (int side = 0; side < 2; ++side)
-    {
-      // The four edges of this face: parallel to others[0] or others[1].
-      int changes = 0;
-      for (int bit = 0; bit < 2; ++bit)
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a)
       {
-        // Edge parallel to others[0]: its other coordinates are axis (=side) and others[1] (=bit).
-        changes += edgeChanges[CubeEdge(others[0], axis < others[1] ? side : bit, axis < others[1] ? bit : side)];
-        changes += edgeChanges[CubeEdge(others[1], axis < others[0] ? side : bit, axis < others[0] ? bit : side)];
+        int p[3];
+        p[axis] = side * s;
+        p[others[0]] = a;
+        p[others[1]] = b;
+        const int v = sign(p[0], p[1], p[2]);
+        grid[b * n + a] = v;
       }
-      bool uniform = true;
-      for (int b = 0; b < s; ++b)
-        for (int a = 0; a < s; ++a)
-        {
-          std::array<int, 3> p{ 0, 0, 0 };
-          p[axis] = side ? s - 1 : 0;
-          p[others[0]] = a;
-          p[others[1]] = b;
-          layer[b * s + a] = static_cast<unsigned char>(local(p));
-          uniform = uniform && layer[b * s + a] == layer[0];
-        }
-      if (changes == 0 && !uniform)
-        return false; // an island that touches no edge (Figure 9b)
-      if (changes != 0 && changes != 2)
-        return false; // a saddle
-      if (changes == 2 && !FaceLayerIsOneArc(layer, s))
+    const std::array<int, 4> ring{ grid[0], grid[s], grid[n * n - 1], grid[s * n] };
+    std::array<int, 8> where{};
+    const int transitions = RingTransitions(ring, where);
+    if (transitions == 0)
+    {
+      // One label (and 0-corners): no boundary point inside the face.
+      int label = 0;
+      for (int v : ring)
+        label = label != 0 ? label : v;
+      // One label and no boundary point inside the face (those on its edges
+      // are runs from its 0-corners, EdgeIsSimple).
+      if (label == 0 || Components(grid, n, label) != 1)
         return false;
+      for (int b = 1; b < s; ++b)
+        for (int a = 1; a < s; ++a)
+          if (grid[b * n + a] == 0)
+            return false;
     }
+    else if (transitions != 2 || Components(grid, n, 1) != 1 || Components(grid, n, -1) != 1 ||
+      Components(grid, n, 0) != 1)
+      return false;
   }
   return true;
 }
@@ -333,11 +371,9 @@ bool SatisfiesSingleManifoldCondition(
 {
   if (first == second || leaf.Size < 2)
     return false;
-  if (!FacesAreClean(image, leaf))
+  if (!EdgesAndFacesAreSimple(BoundarySigns(image, leaf, first, second), leaf))
     return false;
   const LocalLabels local(image, leaf, second);
-  if (!EdgesAndFacesAreSimple(local, leaf))
-    return false;
   return leaf.Dimension == 2 ? InteriorIsOnePath(local, leaf.Size) : InteriorIsOneDisk(local, leaf.Size);
 }
 

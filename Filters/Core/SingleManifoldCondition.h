@@ -9,14 +9,16 @@
  * strong enough that the leaf's cone patch (section 3.1.1) is provably
  * homeomorphic to the image boundary inside it, cell by cell:
  *
- *  - every face of the leaf is *clean*: no image-boundary voxel face lies on
- *    the leaf's boundary (each voxel on a face has the label of its mirror
- *    voxel across it), so the image boundary meets the leaf's faces
- *    transversally and both leaves sharing a face see the same labels on it;
- *  - along every leaf edge the labels change at most once (this excludes the
- *    multiple crossings of Figure 9a);
- *  - on every face, the two labels form one simple arc across the face (or the
- *    face is uniform: this excludes the island of Figure 9b and the saddle);
+ *  - labels are read at lattice points (LatticeLabels.h: 0 where the image
+ *    boundary passes), the same from both leaves of a face;
+ *  - along every leaf edge the image boundary is empty, or one run of points
+ *    between or at the ends (this excludes the multiple crossings of
+ *    Figure 9a);
+ *  - every face is not crossed (one label, its boundary points only at its
+ *    0-corners and the edge runs hanging from them), or crossed once: no
+ *    saddle, no two adjacent 0-corners, the boundary points one 8-connected
+ *    set between one 4-connected set of each label (this excludes the island
+ *    of Figure 9b);
  *  - inside the leaf, the voxel faces between the two labels form one
  *    topological disk: a 2-manifold with boundary (both labels face-connected
  *    around every voxel vertex, which excludes pinched edges and vertices),

@@ -85,16 +85,19 @@ TEST(LabelOctreeMesher, ReportsProgressAndHonoursAbort)
   EXPECT_THROW(MeshLabelImage(image, {}, stop), AbortRequested);
 }
 
-TEST(LabelOctreeMesher, BoxIsMeshedExactly)
+TEST(LabelOctreeMesher, BoxIsMeshedExactlyAtZeroDistance)
 {
-  // A box of label 7 inside background: material volume, boundary area and the
-  // sides of every boundary face are known exactly.
+  // A box of label 7 inside background, h = 0: material volume, boundary area
+  // and the sides of every boundary face are known exactly. (At h > 0 its
+  // edges may be bevelled within the bounds.)
   LabelImage image(13, 11, 9);
   for (int k = 2; k < 7; ++k)
     for (int j = 1; j < 10; ++j)
       for (int i = 3; i < 12; ++i)
         image(i, j, k) = 7;
-  const MesherResult result = MeshLabelImage(image, {});
+  MesherParameters exact;
+  exact.ImageToMeshDistance = exact.MeshToImageDistance = 0.0;
+  const MesherResult result = MeshLabelImage(image, exact);
   std::map<std::int32_t, double> volume;
   for (std::size_t c = 0; c < result.Mesh.NumberOfCells(); ++c)
   {
@@ -113,6 +116,10 @@ TEST(LabelOctreeMesher, BoxIsMeshedExactly)
   }
   EXPECT_NEAR(area, 2.0 * (9 * 9 + 9 * 5 + 9 * 5), 1e-9);
   EXPECT_TRUE(WithinHausdorff(image, result.Mesh, 0.0, 0.0));
+
+  const MesherResult bevelled = MeshLabelImage(image, {});
+  EXPECT_TRUE(WithinHausdorff(image, bevelled.Mesh, 2.0, 2.0));
+  EXPECT_LE(bevelled.Mesh.NumberOfCells(), result.Mesh.NumberOfCells());
 }
 
 TEST(LabelOctreeMesher, LabelsTouchingTheImageBorderAreClosed)
@@ -136,13 +143,35 @@ TEST(LabelOctreeMesher, LabelsTouchingTheImageBorderAreClosed)
   EXPECT_NEAR((area[{ 0, 2 }]), 2 * (3 * 5 + 3 * 7) + 5 * 7, 1e-9);
 }
 
-TEST(LabelOctreeMesher, TwoDimensionalDiscIsConformingAndExact)
+TEST(LabelOctreeMesher, TwoDimensionalDiscUsesTheDistanceAllowance)
+{
+  // With h = 2 the boundary leaves grow beyond single pixels (fewer cells than
+  // at h = 0) while both bounds hold.
+  LabelImage image(41, 37, 1);
+  for (int j = 0; j < 37; ++j)
+    for (int i = 0; i < 41; ++i)
+      image(i, j, 0) = std::hypot(i - 20.3, j - 17.6) < 12.0 ? 3 : 0;
+  MesherParameters exact;
+  exact.ImageToMeshDistance = exact.MeshToImageDistance = 0.0;
+  const MesherResult fine = MeshLabelImage(image, exact);
+  const MesherResult coarse = MeshLabelImage(image, {});
+  EXPECT_LT(coarse.Mesh.NumberOfCells(), fine.Mesh.NumberOfCells());
+  EXPECT_TRUE(WithinHausdorff(image, coarse.Mesh, 2.0, 2.0));
+  EXPECT_FALSE(WithinHausdorff(image, coarse.Mesh, 0.0, 0.0));
+  EXPECT_TRUE(MeasureConformity(coarse.Mesh).Conforming());
+  for (const auto& [label, t] : CompareTopology(image, coarse.Mesh))
+    EXPECT_TRUE(t.Matches()) << label;
+}
+
+TEST(LabelOctreeMesher, TwoDimensionalDiscIsConformingAndExactAtZeroDistance)
 {
   LabelImage image(41, 37, 1);
   for (int j = 0; j < 37; ++j)
     for (int i = 0; i < 41; ++i)
       image(i, j, 0) = std::hypot(i - 20.3, j - 17.6) < 12.0 ? 3 : 0;
-  const MesherResult result = MeshLabelImage(image, {});
+  MesherParameters exact;
+  exact.ImageToMeshDistance = exact.MeshToImageDistance = 0.0;
+  const MesherResult result = MeshLabelImage(image, exact);
   EXPECT_EQ(result.Mesh.Dimension, 2);
   for (const Point3& p : result.Mesh.Points)
     EXPECT_EQ(p[2], 0.0);

@@ -27,7 +27,7 @@ namespace labelmesher
 namespace
 {
 
-constexpr double kProvenDihedralBound = 35.2643896827; // asin(1/sqrt 3), TestAngleBoundEnumeration
+constexpr double kProvenDihedralBound = 30.0; // TestAngleBoundEnumeration
 constexpr double kProvenPlanarBound = 45.0;
 constexpr int kImagesPerShard = 50;
 

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef LabelImageConversion_h
+#define LabelImageConversion_h
+
+/**
+ * @file LabelImageConversion.h
+ * Module-private plumbing shared by the filters that read label images: a
+ * vtkImageData of integer labels becomes the core's LabelImage (index space),
+ * validated, with the map back to physical space.
+ *
+ * A single-slice image (2D) is permuted into the x-y plane; anisotropic spacing
+ * is resampled nearest-neighbour to the smallest (in-plane) spacing, keeping the
+ * physical extent of the voxels, so that angles and distances measured in index
+ * space hold in physical space.
+ */
+
+#include "LabelImage.h"
+#include "SimplexMesh.h"
+
+#include <string>
+
+class vtkDataArray;
+class vtkImageData;
+
+namespace labelmesher
+{
+
+/// LabelImage axis a corresponds to image axis ImageAxis[a]; its index p maps to
+/// the image's local (pre-direction) coordinate Start[a] + p * Step[a].
+struct ImagePlacement
+{
+  int ImageAxis[3] = { 0, 1, 2 };
+  double Start[3] = { 0, 0, 0 };
+  double Step[3] = { 1, 1, 1 };
+  double Origin[3] = { 0, 0, 0 };
+  double Direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  double VoxelSize = 1.0;
+
+  /// physical = origin + direction * local(index)
+  Point3 ToPhysical(const Point3& p) const;
+
+  /// True when the index -> physical map reverses orientation (tetrahedra must
+  /// then swap two vertices to stay positively oriented).
+  bool ReversesOrientation() const;
+};
+
+/// Validates `input` and its label array `scalars` (integer type, one component,
+/// point data, labels in [0, 2^31), finite non-zero spacing, non-empty extent,
+/// some foreground) and converts it. Returns false with a one-sentence reason
+/// in `error` (no trailing period) when the image cannot be meshed.
+bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& image,
+  ImagePlacement& placement, std::string& error);
+
+} // namespace labelmesher
+
+#endif

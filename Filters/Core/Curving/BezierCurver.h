@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_BezierCurver_h
+#define labelmesher_BezierCurver_h
+
+/**
+ * @file BezierCurver.h
+ * The 2D curvilinear mesher of dissertation chapter 4 as one free function: a
+ * linear labelled triangle mesh in, a mesh of cubic Bézier triangles out whose
+ * material interfaces are C1 or C2 smooth Bézier paths through the linear
+ * mesh's boundary vertices (section 4.1), whose interior control points are
+ * placed by iterative linear elasticity (section 4.3), and whose every cell's
+ * Jacobian is bounded from below by Bézier subdivision (section 4.2). Cells
+ * with two edges on one smooth chain are split first (BoundaryEars.h).
+ */
+
+#include "BoundaryEars.h"
+#include "CurvedMesh.h"
+#include "ElasticUntangler.h"
+#include "InterfaceChains.h"
+#include "JacobianBound.h"
+#include "ProgressObserver.h"
+#include "SimplexMesh.h"
+#include "SmoothBoundary.h"
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct CurvingParameters
+{
+  SmoothingOptions Smoothing;
+  UntanglingOptions Untangling;
+  /// Edges on this box's sides stay straight and end interface chains (the
+  /// image border). Unset: no border, every interface is curved.
+  bool HasBorder = false;
+  Box2 Border{ 0.0, 0.0, 0.0, 0.0 };
+};
+
+struct CurvingResult
+{
+  /// The linear mesh that was curved: the input with its boundary ears split
+  /// (BoundaryEars.h); same geometry, possibly more cells.
+  SimplexMesh Linear;
+  std::size_t SplitEars = 0;
+  CurvedMesh Mesh;
+  /// Per cell: proven lower and upper bounds of det J (same order as Mesh.Cells).
+  std::vector<JacobianBounds> CellBounds;
+  /// True when every cell is proven valid (det J > 0 everywhere).
+  bool Valid = false;
+  std::vector<std::size_t> InvalidCells;
+  /// Cells with a non-positive Jacobian somewhere (or undecided) once the curved
+  /// boundary is in place and before untangling (interior edges straight).
+  std::size_t InvalidBeforeUntangling = 0;
+  int UntanglingSteps = 0;
+  std::size_t NumberOfChains = 0;
+  std::size_t NumberOfClosedChains = 0;
+  std::size_t NumberOfCurvedEdges = 0;
+  std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
+};
+
+/// Curves `linear` (Dimension 2, counter-clockwise triangles in the x-y plane).
+/// Throws std::invalid_argument for bad input (not 2D, no cells, inverted or
+/// degenerate triangles) and AbortRequested when `observer` says stop. An
+/// untangling failure is not an exception: Valid is false and InvalidCells
+/// lists the cells, so that callers can report and mark them.
+CurvingResult CurveMesh(const SimplexMesh& linear, const CurvingParameters& parameters,
+  const ProgressObserver& observer = {});
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "BoundaryEars.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+
+namespace labelmesher
+{
+namespace
+{
+
+using EdgeKey = std::uint64_t;
+
+EdgeKey Key(std::int64_t a, std::int64_t b)
+{
+  if (a > b)
+    std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) ^ static_cast<std::uint64_t>(b);
+}
+
+/// Chain edges, and the vertices where a chain passes smoothly (every vertex of
+/// a closed chain, the inner vertices of an open one).
+struct ChainGeometry
+{
+  std::unordered_set<EdgeKey> Edges;
+  std::vector<bool> Smooth;
+};
+
+ChainGeometry DescribeChains(const std::vector<InterfaceChain>& chains, std::size_t points)
+{
+  ChainGeometry g;
+  g.Smooth.assign(points, false);
+  for (const InterfaceChain& chain : chains)
+  {
+    const std::size_t n = chain.Vertices.size();
+    const std::size_t segments = chain.Closed ? n : n - 1;
+    for (std::size_t s = 0; s < segments; ++s)
+      g.Edges.insert(Key(chain.Vertices[s], chain.Vertices[(s + 1) % n]));
+    for (std::size_t k = chain.Closed ? 0 : 1; k < (chain.Closed ? n : n - 1); ++k)
+      g.Smooth[static_cast<std::size_t>(chain.Vertices[k])] = true;
+  }
+  return g;
+}
+
+/// The edge opposite the ear vertex of cell c, as (position in the cell of its
+/// first vertex), or -1 when c is not an ear.
+int EarEdge(const SimplexMesh& mesh, std::size_t c, const ChainGeometry& g)
+{
+  const std::int64_t* v = mesh.Cell(c);
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::int64_t apex = v[k];
+    if (!g.Smooth[static_cast<std::size_t>(apex)])
+      continue;
+    if (g.Edges.count(Key(apex, v[(k + 1) % 3])) && g.Edges.count(Key(apex, v[(k + 2) % 3])))
+      return (k + 1) % 3; // the edge v[k+1] -> v[k+2]
+  }
+  return -1;
+}
+
+} // namespace
+
+std::size_t SplitBoundaryEars(
+  SimplexMesh& mesh, std::vector<InterfaceChain>& chains, const Box2& border, int maximumRounds)
+{
+  std::size_t splits = 0;
+  for (int round = 0; round < maximumRounds; ++round)
+  {
+    const ChainGeometry g = DescribeChains(chains, mesh.Points.size());
+    // Edges to split this round; a cell takes part in one split at most, so
+    // that every split sees the cells as they were at the start of the round.
+    std::vector<bool> busy(mesh.NumberOfCells(), false);
+    std::unordered_map<EdgeKey, std::vector<std::size_t>> cellsOfEdge;
+    std::vector<std::pair<std::size_t, int>> ears;
+    for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+    {
+      const int e = EarEdge(mesh, c, g);
+      if (e >= 0)
+        ears.emplace_back(c, e);
+    }
+    if (ears.empty())
+      break;
+    for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+      for (int k = 0; k < 3; ++k)
+        cellsOfEdge[Key(mesh.Cell(c)[k], mesh.Cell(c)[(k + 1) % 3])].push_back(c);
+
+    std::vector<std::array<std::int64_t, 3>> added;
+    std::vector<std::int32_t> addedMaterials;
+    for (const auto& [ear, e] : ears)
+    {
+      const std::int64_t p = mesh.Cell(ear)[e];
+      const std::int64_t q = mesh.Cell(ear)[(e + 1) % 3];
+      const auto& sharing = cellsOfEdge[Key(p, q)];
+      if (std::any_of(sharing.begin(), sharing.end(), [&](std::size_t c) { return busy[c]; }))
+        continue; // next round
+      const Point3& a = mesh.Points[static_cast<std::size_t>(p)];
+      const Point3& b = mesh.Points[static_cast<std::size_t>(q)];
+      const auto m = static_cast<std::int64_t>(mesh.Points.size());
+      mesh.Points.push_back({ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) });
+      for (std::size_t c : sharing)
+      {
+        busy[c] = true;
+        std::int64_t* v = mesh.Connectivity.data() + 3 * c;
+        int i = 0;
+        while (Key(v[i], v[(i + 1) % 3]) != Key(p, q))
+          ++i;
+        // [x_i, x_i+1, x_i+2] -> [x_i, m, x_i+2] and [m, x_i+1, x_i+2]: both keep the orientation.
+        const std::array<std::int64_t, 3> second{ m, v[(i + 1) % 3], v[(i + 2) % 3] };
+        v[(i + 1) % 3] = m;
+        added.push_back(second);
+        addedMaterials.push_back(mesh.Materials[c]);
+      }
+      ++splits;
+    }
+    for (std::size_t n = 0; n < added.size(); ++n)
+    {
+      mesh.Connectivity.insert(mesh.Connectivity.end(), added[n].begin(), added[n].end());
+      mesh.Materials.push_back(addedMaterials[n]);
+    }
+    chains = ExtractInterfaceChains(mesh, border);
+  }
+  return splits;
+}
+
+} // namespace labelmesher

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "CurvingChecks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace labelmesher
+{
+namespace testing
+{
+namespace
+{
+
+Point2 Sub(const Point2& a, const Point2& b) { return { a[0] - b[0], a[1] - b[1] }; }
+double Norm(const Point2& a) { return std::hypot(a[0], a[1]); }
+
+/// |a - b| relative to `scale`: the derivatives at a joint are compared relative
+/// to the largest of them, so that (nearly) zero second derivatives on
+/// straight chains do not turn rounding noise into a mismatch.
+double RelativeMismatch(const Point2& a, const Point2& b, double scale)
+{
+  return Norm(Sub(a, b)) / std::max(scale, 1e-300);
+}
+
+Point2 Unit(const Point2& a)
+{
+  const double n = Norm(a);
+  return n > 0.0 ? Point2{ a[0] / n, a[1] / n } : a;
+}
+
+} // namespace
+
+SimplexMesh ForegroundMesh(const SimplexMesh& mesh)
+{
+  SimplexMesh kept;
+  kept.Dimension = mesh.Dimension;
+  std::vector<std::int64_t> newId(mesh.Points.size(), -1);
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    if (mesh.Materials[c] == 0)
+    {
+      continue;
+    }
+    for (int v = 0; v < mesh.VerticesPerCell(); ++v)
+    {
+      std::int64_t& id = newId[static_cast<std::size_t>(mesh.Cell(c)[v])];
+      if (id < 0)
+      {
+        id = static_cast<std::int64_t>(kept.Points.size());
+        kept.Points.push_back(mesh.Points[static_cast<std::size_t>(mesh.Cell(c)[v])]);
+      }
+      kept.Connectivity.push_back(id);
+    }
+    kept.Materials.push_back(mesh.Materials[c]);
+  }
+  return kept;
+}
+
+double SampledMinimumJacobian(const CubicTriangle& triangle, int n)
+{
+  double minimum = std::numeric_limits<double>::max();
+  for (int i = 0; i <= n; ++i)
+  {
+    for (int j = 0; j <= n - i; ++j)
+    {
+      const double v = static_cast<double>(i) / n;
+      const double w = static_cast<double>(j) / n;
+      minimum = std::min(minimum, EvaluateJacobian(triangle, 1.0 - v - w, v, w));
+    }
+  }
+  return minimum;
+}
+
+JointContinuity MeasureJointContinuity(
+  const SimplexMesh& linear, const CurvedMesh& curved, const Box2& border, Smoothness smoothness)
+{
+  JointContinuity result;
+  for (const InterfaceChain& chain : ExtractInterfaceChains(linear, border))
+  {
+    const std::size_t n = chain.Vertices.size();
+    for (std::int64_t v : chain.Vertices)
+    {
+      const Point3& p = linear.Points[static_cast<std::size_t>(v)];
+      result.VertexMovement = std::max(result.VertexMovement,
+        Norm(Sub(curved.ControlPoints[static_cast<std::size_t>(v)], { p[0], p[1] })));
+    }
+    // Joint at vertex k between segments (k-1 -> k) and (k -> k+1).
+    const std::size_t first = chain.Closed ? 0 : 1;
+    const std::size_t last = chain.Closed ? n : n - 1;
+    for (std::size_t k = first; k < last; ++k)
+    {
+      const std::int64_t a = chain.Vertices[(k + n - 1) % n];
+      const std::int64_t v = chain.Vertices[k];
+      const std::int64_t b = chain.Vertices[(k + 1) % n];
+      const auto in = curved.EdgePoints(a, v);
+      const auto out = curved.EdgePoints(v, b);
+      const Point2& pv = curved.ControlPoints[static_cast<std::size_t>(v)];
+      const Point2& in1 = curved.ControlPoints[static_cast<std::size_t>(in[0])];
+      const Point2& in2 = curved.ControlPoints[static_cast<std::size_t>(in[1])];
+      const Point2& out1 = curved.ControlPoints[static_cast<std::size_t>(out[0])];
+      const Point2& out2 = curved.ControlPoints[static_cast<std::size_t>(out[1])];
+      // Cubic Bézier end derivatives: 3 (P3 - P2) and 6 (P3 - 2 P2 + P1).
+      const Point2 firstIn{ 3.0 * (pv[0] - in2[0]), 3.0 * (pv[1] - in2[1]) };
+      const Point2 firstOut{ 3.0 * (out1[0] - pv[0]), 3.0 * (out1[1] - pv[1]) };
+      const Point2 secondIn{ 6.0 * (pv[0] - 2.0 * in2[0] + in1[0]), 6.0 * (pv[1] - 2.0 * in2[1] + in1[1]) };
+      const Point2 secondOut{ 6.0 * (out2[0] - 2.0 * out1[0] + pv[0]), 6.0 * (out2[1] - 2.0 * out1[1] + pv[1]) };
+      const double scale = std::max({ Norm(firstIn), Norm(firstOut), Norm(secondIn), Norm(secondOut) });
+      ++result.Joints;
+      if (smoothness == Smoothness::C2)
+      {
+        result.FirstDerivativeMismatch =
+          std::max(result.FirstDerivativeMismatch, RelativeMismatch(firstIn, firstOut, scale));
+        result.SecondDerivativeMismatch =
+          std::max(result.SecondDerivativeMismatch, RelativeMismatch(secondIn, secondOut, scale));
+      }
+      else
+      {
+        result.FirstDerivativeMismatch =
+          std::max(result.FirstDerivativeMismatch, Norm(Sub(Unit(firstIn), Unit(firstOut))));
+      }
+    }
+  }
+  return result;
+}
+
+} // namespace testing
+} // namespace labelmesher

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_testing_CurvingChecks_h
+#define labelmesher_testing_CurvingChecks_h
+
+/**
+ * @file CurvingChecks.h
+ * Independent checks of a curved mesh for the curver's tests: det J sampled
+ * densely (not via Table 1 or subdivision), and the continuity of the curved
+ * interfaces measured at every joint on the output control points.
+ */
+
+#include "BezierCurver.h"
+#include "LabelOctreeMesher.h"
+
+#include <string>
+
+namespace labelmesher
+{
+namespace testing
+{
+
+/// The cells of non-zero material of a mesher result, with compacted points.
+SimplexMesh ForegroundMesh(const SimplexMesh& mesh);
+
+/// Smallest det J over a barycentric grid of `n` steps per side (corners included).
+double SampledMinimumJacobian(const CubicTriangle& triangle, int n = 24);
+
+struct JointContinuity
+{
+  std::size_t Joints = 0;
+  /// Largest mismatch of first derivatives at a joint (C2: of the vectors,
+  /// relative to the largest first or second derivative there; C1: of the unit tangents).
+  double FirstDerivativeMismatch = 0.0;
+  /// Same for second derivatives (measured for C2 only).
+  double SecondDerivativeMismatch = 0.0;
+  /// Largest distance of a chain vertex from its linear position.
+  double VertexMovement = 0.0;
+};
+
+/// Measures continuity at every interior joint of every chain of `linear`
+/// (extracted with `border`) on the control points of `curved`.
+JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved,
+  const Box2& border, Smoothness smoothness);
+
+} // namespace testing
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/**
+ * @class   vtkBezierCurver
+ * @brief   curve a 2D labelled triangle mesh into a valid cubic Bézier mesh with
+ *          C1 or C2 smooth material boundaries
+ *
+ * vtkBezierCurver implements the curvilinear mesher of chapter 4 of F.
+ * Drakopoulos' dissertation ("Automatic linear and curvilinear mesh generation
+ * driven by validity, fidelity and topological guarantees") as a thin adapter
+ * over the VTK-free core function labelmesher::CurveMesh
+ * (Filters/Core/Curving/BezierCurver.h):
+ *
+ * 1. Every interface between two materials, and between a material and the
+ *    outside, becomes a cubic Bézier path through the linear mesh's boundary
+ *    vertices (section 4.1): C1 by the tangent construction of Figure 17a, C2 by
+ *    the B-spline system 6 S_i = B_{i-1} + 4 B_i + B_{i+1} (Figure 17c). Closed
+ *    loops are periodic; chains ending where three or more materials meet, or on
+ *    the image border, are open and keep their end vertices. Edges on the image
+ *    border stay straight.
+ * 2. The other control points (interior edges, cell centres) follow by linear
+ *    elasticity on the control nets, the boundary displacement applied in
+ *    increasing fractions until every cell is valid (section 4.3, Figure 21).
+ * 3. Every cell's Jacobian determinant, a quartic Bézier triangle (Table 1), is
+ *    bounded by subdivision (section 4.2); a cell is valid when that bound or its
+ *    control net (Theorem 4.2.1) proves det J > 0.
+ *
+ * Input port 0: vtkUnstructuredGrid of VTK_TRIANGLE cells lying in one axis plane
+ * (x-y, x-z or y-z; e.g. vtkLabelOctreeMesher's 2D output) with an integer cell
+ * array `Material` (0 = background). Input port 1 (optional): the label image the
+ * mesh came from (2D vtkImageData of integer labels, as for vtkLabelOctreeMesher);
+ * when given, its border box is the border whose edges stay straight, and the
+ * accuracy of the linear and of the curved mesh is measured on it. Without it
+ * every interface is curved, including any that runs along the image border.
+ *
+ * Output: vtkUnstructuredGrid of VTK_BEZIER_TRIANGLE cells of degree 3 (10 points
+ * each in VTK's order; edge points shared by neighbouring cells), which ParaView
+ * renders curved. Cell data:
+ * - `Material` (int): copied from the input;
+ * - `MinimumJacobian` (double): proven lower bound of det J over the cell, J the
+ *   Jacobian of the map from the reference triangle (0,0), (1,0), (0,1) to the
+ *   cell; physical units squared (a straight cell has 2 x its area);
+ * - `ScaledJacobian` (double): MinimumJacobian / proven upper bound of det J, a
+ *   conservative min|J| / max|J| (1 for straight cells, <= 0 for invalid ones);
+ * - `Valid` (unsigned char): 1 where det J > 0 is proven.
+ * Field data: `Smoothness`, `Tension`, `MaximumUntanglingSteps`,
+ * `QualityIterations`; `InvalidBeforeUntangling` (cells made invalid by curving
+ * the boundary alone), `InvalidCells`, `UntanglingSteps`, `InterfaceChains`,
+ * `ClosedInterfaceChains`, `CurvedEdges`, `SplitEars` (edges split before curving,
+ * see below); `StageName` / `StageSeconds`; with an
+ * image: `Pixels`, `MisclassifiedPixelsLinear`, `MisclassifiedPixelsCurved`
+ * (pixels whose label differs from the mesh material at their centre; cells of
+ * material 0 count as outside) and, one tuple per label, `AccuracyMaterial`,
+ * `MissedPixelsLinear`, `MissedPixelsCurved` (its pixels given another material),
+ * `ClaimedPixelsLinear`, `ClaimedPixelsCurved` (other pixels given it).
+ *
+ * Ears -- cells with two edges on one smooth interface chain -- would have
+ * det J = 0 at their corner once curved, so their third edge is split at its
+ * midpoint first (with the cell across it): the output may have a few more cells
+ * than the input, over the same region.
+ *
+ * If some cell cannot be made valid within MaximumUntanglingSteps, the filter
+ * reports an error naming the count, and still outputs the mesh with those cells
+ * marked (`Valid` = 0) for inspection: an invalid mesh is never passed on
+ * silently. Progress is reported by stage; AbortExecute stops the run (empty output).
+ *
+ * @sa vtkLabelOctreeMesher vtkBezierTriangle
+ */
+
+#ifndef vtkBezierCurver_h
+#define vtkBezierCurver_h
+
+#include "LabelMesherFiltersModule.h" // For export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+class LABELMESHERFILTERS_EXPORT vtkBezierCurver : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkBezierCurver* New();
+  vtkTypeMacro(vtkBezierCurver, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Continuity of the curved material boundaries: 1 (C1, tangent construction)
+   * or 2 (C2, B-spline interpolation). Default 2.
+   */
+  vtkSetClampMacro(Smoothness, int, 1, 2);
+  vtkGetMacro(Smoothness, int);
+  ///@}
+
+  ///@{
+  /**
+   * C1 only: length of the tangent handles as a fraction of the translated chord
+   * of Figure 17a (dimensionless, [0, 1]); 1/3 on evenly spaced vertices gives
+   * the Catmull-Rom spline, 0 straight edges. Default 1/3.
+   */
+  vtkSetClampMacro(Tension, double, 0.0, 1.0);
+  vtkGetMacro(Tension, double);
+  ///@}
+
+  ///@{
+  /**
+   * Most fractions the boundary displacement is split into while untangling
+   * (tried 1, 2, 4, ... up to this). Default 64.
+   */
+  vtkSetClampMacro(MaximumUntanglingSteps, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumUntanglingSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Further doublings of the fractions after the mesh is valid, each kept when
+   * the worst scaled Jacobian improves. Default 0.
+   */
+  vtkSetClampMacro(QualityIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(QualityIterations, int);
+  ///@}
+
+  /**
+   * The optional label image (port 1) used for the border and accuracy.
+   */
+  void SetImageConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+protected:
+  vtkBezierCurver();
+  ~vtkBezierCurver() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Smoothness = 2;
+  double Tension = 1.0 / 3.0;
+  int MaximumUntanglingSteps = 64;
+  int QualityIterations = 0;
+
+private:
+  vtkBezierCurver(const vtkBezierCurver&) = delete;
+  void operator=(const vtkBezierCurver&) = delete;
+};
+
+#endif

@@ -1,0 +1,196 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Drives the wrapped vtkBezierCurver from Python behind vtkLabelOctreeMesher, as
+a ParaView/Slicer pipeline would, and checks what the filter promises: cubic
+VTK_BEZIER_TRIANGLE cells that VTK itself evaluates with a Jacobian of one sign
+everywhere (sampled through vtkBezierTriangle, independently of the filter's
+own proof), shared edge control points, the Material and Jacobian arrays,
+the pixel accuracy of the linear and the curved mesh, meshes in any axis
+plane, and clean errors.
+
+Run with PYTHONPATH=<build>/lib/python3/dist-packages (ctest sets it)."""
+
+import unittest
+
+import numpy as np
+from vtkmodules.vtkCommonCore import VTK_STRING, mutable, vtkCommand
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, vtkImageData, vtkUnstructuredGrid
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+import labelmesher
+
+
+def disc_image(normal_axis=2, n=48, radius=17.3):
+    """A disc of label 4 in an n x n single-slice image lying across `normal_axis`."""
+    y, x = np.mgrid[0:n, 0:n]
+    labels = np.where((x - 23.6) ** 2 + (y - 24.2) ** 2 <= radius ** 2, 4, 0).astype(np.uint8)
+    dims = [n, n, n]
+    dims[normal_axis] = 1
+    image = vtkImageData()
+    image.SetDimensions(*dims)
+    image.SetSpacing(0.5, 0.5, 0.5)
+    image.SetOrigin(3.0, -2.0, 1.0)
+    array = numpy_to_vtk(labels.ravel(), deep=True)
+    array.SetName("Labels")
+    image.GetPointData().SetScalars(array)
+    return image
+
+
+def run_filter(algorithm, *inputs, **settings):
+    errors = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(obj, event, message):
+        errors.append(message)
+
+    algorithm.AddObserver(vtkCommand.ErrorEvent, on_error)
+    for name, value in settings.items():
+        getattr(algorithm, "Set" + name)(value)
+    for port, data in enumerate(inputs):
+        if data is not None:
+            algorithm.SetInputDataObject(port, data)
+    algorithm.Update()
+    return algorithm.GetOutput(), errors
+
+
+def curve(image, **settings):
+    mesher = labelmesher.vtkLabelOctreeMesher()
+    mesher.SetInputData(image)
+    mesher.Update()
+    return run_filter(labelmesher.vtkBezierCurver(), mesher.GetOutput(), image, **settings)
+
+
+def jacobian_signs(grid, plane_axes, samples=7):
+    """det of d(x_a, x_b)/d(r, s) by central differences of VTK's own evaluation
+    of every cell at interior parametric points: (min, max) over all samples."""
+    lowest, highest = np.inf, -np.inf
+    h = 1e-6
+    sub_id = mutable(0)
+    weights = [0.0] * 10
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+
+        def at(r, s):
+            x = [0.0, 0.0, 0.0]
+            cell.EvaluateLocation(sub_id, [r, s, 0.0], x, weights)
+            return np.array([x[plane_axes[0]], x[plane_axes[1]]])
+
+        for i in range(1, samples):
+            for j in range(1, samples - i):
+                r, s = i / samples, j / samples
+                dr = (at(r + h, s) - at(r - h, s)) / (2 * h)
+                ds = (at(r, s + h) - at(r, s - h)) / (2 * h)
+                det = dr[0] * ds[1] - dr[1] * ds[0]
+                lowest, highest = min(lowest, det), max(highest, det)
+    return lowest, highest
+
+
+class DiscTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.image = disc_image()
+        cls.grid, cls.errors = curve(cls.image)
+
+    def test_no_errors(self):
+        self.assertEqual(self.errors, [])
+
+    def test_cells_are_cubic_bezier_triangles(self):
+        self.assertGreater(self.grid.GetNumberOfCells(), 50)
+        types = vtk_to_numpy(self.grid.GetCellTypesArray())
+        self.assertTrue(np.all(types == VTK_BEZIER_TRIANGLE))
+        offsets = vtk_to_numpy(self.grid.GetCells().GetOffsetsArray())
+        self.assertTrue(np.all(np.diff(offsets) == 10))
+
+    def test_edge_control_points_are_shared(self):
+        conn = vtk_to_numpy(self.grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+        uses = np.bincount(conn[:, 3:9].ravel())
+        # An edge point belongs to one cell (boundary edge) or two (interior edge).
+        self.assertTrue(set(np.unique(uses[uses > 0])) <= {1, 2})
+        self.assertGreater(np.count_nonzero(uses == 2), np.count_nonzero(uses == 1))
+
+    def test_arrays(self):
+        cd = self.grid.GetCellData()
+        self.assertTrue(np.all(vtk_to_numpy(cd.GetArray("Material")) == 4))
+        self.assertTrue(np.all(vtk_to_numpy(cd.GetArray("Valid")) == 1))
+        scaled = vtk_to_numpy(cd.GetArray("ScaledJacobian"))
+        self.assertTrue(np.all((scaled > 0) & (scaled <= 1 + 1e-12)))
+        fd = self.grid.GetFieldData()
+        self.assertEqual(fd.GetArray("InvalidCells").GetValue(0), 0)
+        self.assertGreater(fd.GetArray("CurvedEdges").GetValue(0), 0)
+
+    def test_vtk_sees_a_jacobian_of_one_sign(self):
+        lowest, highest = jacobian_signs(self.grid, (0, 1))
+        self.assertTrue(lowest > 0 or highest < 0, (lowest, highest))
+
+    def test_accuracy_is_reported_consistently(self):
+        # Every misclassified pixel is missed by its label, claimed by another
+        # material, or both (section 5.2.3's two kinds of error).
+        fd = self.grid.GetFieldData()
+        self.assertEqual(fd.GetArray("Pixels").GetValue(0), 48 * 48)
+        self.assertEqual(vtk_to_numpy(fd.GetArray("AccuracyMaterial")).tolist(), [4])
+        for kind in ("Linear", "Curved"):
+            total = fd.GetArray("MisclassifiedPixels" + kind).GetValue(0)
+            missed = vtk_to_numpy(fd.GetArray("MissedPixels" + kind)).sum()
+            claimed = vtk_to_numpy(fd.GetArray("ClaimedPixels" + kind)).sum()
+            self.assertLessEqual(total, missed + claimed)
+            self.assertLessEqual(missed + claimed, 2 * total)
+            self.assertLess(total, 0.05 * 48 * 48)
+
+    def test_c1(self):
+        grid, errors = curve(self.image, Smoothness=1, Tension=0.25)
+        self.assertEqual(errors, [])
+        self.assertTrue(np.all(vtk_to_numpy(grid.GetCellData().GetArray("Valid")) == 1))
+        self.assertEqual(grid.GetFieldData().GetArray("Smoothness").GetValue(0), 1)
+
+
+class PlaneTest(unittest.TestCase):
+    def test_mesh_in_the_xz_plane(self):
+        grid, errors = curve(disc_image(normal_axis=1))
+        self.assertEqual(errors, [])
+        points = vtk_to_numpy(grid.GetPoints().GetData())
+        self.assertTrue(np.allclose(points[:, 1], points[0, 1]))
+        self.assertTrue(np.all(vtk_to_numpy(grid.GetCellData().GetArray("Valid")) == 1))
+        lowest, highest = jacobian_signs(grid, (0, 2), samples=4)
+        self.assertTrue(lowest > 0 or highest < 0, (lowest, highest))
+
+
+class ErrorTest(unittest.TestCase):
+    def expect_error(self, grid, errors, fragment):
+        self.assertEqual(grid.GetNumberOfCells(), 0)
+        self.assertTrue(any(fragment in e for e in errors), errors)
+
+    def test_no_material_array(self):
+        mesher = labelmesher.vtkLabelOctreeMesher()
+        mesher.SetInputData(disc_image())
+        mesher.Update()
+        mesh = vtkUnstructuredGrid()
+        mesh.DeepCopy(mesher.GetOutput())
+        mesh.GetCellData().RemoveArray("Material")
+        grid, errors = run_filter(labelmesher.vtkBezierCurver(), mesh)
+        self.expect_error(grid, errors, "Material")
+
+    def test_tetrahedra_are_rejected(self):
+        image = vtkImageData()
+        image.SetDimensions(8, 8, 8)
+        labels = np.zeros((8, 8, 8), dtype=np.uint8)
+        labels[2:6, 2:6, 2:6] = 1
+        image.GetPointData().SetScalars(numpy_to_vtk(labels.ravel(), deep=True))
+        mesher = labelmesher.vtkLabelOctreeMesher()
+        mesher.SetInputData(image)
+        mesher.Update()
+        grid, errors = run_filter(labelmesher.vtkBezierCurver(), mesher.GetOutput())
+        self.expect_error(grid, errors, "axis plane")
+
+    def test_3d_image_on_port_1_is_rejected(self):
+        mesher = labelmesher.vtkLabelOctreeMesher()
+        mesher.SetInputData(disc_image())
+        mesher.Update()
+        volume = vtkImageData()
+        volume.SetDimensions(4, 4, 4)
+        volume.GetPointData().SetScalars(numpy_to_vtk(np.ones(64, dtype=np.uint8), deep=True))
+        grid, errors = run_filter(labelmesher.vtkBezierCurver(), mesher.GetOutput(), volume)
+        self.expect_error(grid, errors, "3D")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -4,7 +4,7 @@
 
 /**
  * @file Arguments.h
- * Command line of `labelmesher mesh INPUT -o OUTPUT [options]`.
+ * Command line of `labelmesher mesh|curve INPUT -o OUTPUT [options]`.
  */
 
 #include <stdexcept>
@@ -21,12 +21,18 @@ struct UsageError : std::runtime_error
 
 struct Arguments
 {
+  std::string Command;             ///< "mesh" or "curve"
   std::string Input;
   std::string Output;              ///< .vtu (VTK XML) or .vtk (legacy)
   std::string Report;              ///< JSON report path; empty: none
   double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
   double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
   bool IncludeBackground = false;
+  // curve only
+  int Smoothness = 2;               ///< 1 (C1) or 2 (C2)
+  double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless
+  int MaximumUntanglingSteps = 64;
+  int QualityIterations = 0;
   bool Quiet = false;
   bool Help = false;
   bool Version = false;

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /**
  * @file main.cxx
- * labelmesher: read a label image, run vtkLabelOctreeMesher, write the mesh and
- * the report. Exit status 0 on success, 1 when the input or the run fails, 2 on
+ * labelmesher: read a label image, run vtkLabelOctreeMesher (and for `curve`
+ * vtkBezierCurver on its 2D mesh), write the mesh and the report. Exit status 0 on success, 1 when the input or the run fails, 2 on
  * a bad command line; every failure is reported as one line on stderr.
  */
 
 #include "Arguments.h"
+#include "CurveReport.h"
 #include "ImageReader.h"
 #include "ProgressBar.h"
 #include "Report.h"
@@ -15,6 +16,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkBezierCurver.h"
 #include "vtkImageData.h"
 #include "vtkLabelOctreeMesher.h"
 #include "vtkNew.h"
@@ -70,64 +72,133 @@ void WriteMesh(vtkUnstructuredGrid* mesh, const std::string& path)
   }
 }
 
+/// Runs `algorithm` with a progress bar; throws RunError with its first error.
+/// Returns its first warning (empty if none).
+std::string UpdateWithProgress(vtkAlgorithm* algorithm, bool quiet)
+{
+  VTKMessages errors(algorithm, vtkCommand::ErrorEvent);
+  VTKMessages warnings(algorithm, vtkCommand::WarningEvent);
+  ProgressBar bar(!quiet);
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&bar);
+  progress->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
+    auto* running = static_cast<vtkAlgorithm*>(caller);
+    const char* stage = running->GetProgressText();
+    static_cast<ProgressBar*>(clientData)->Update(
+      *static_cast<double*>(callData), stage ? stage : "");
+  });
+  const unsigned long tag = algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
+  algorithm->Update();
+  algorithm->RemoveObserver(tag);
+  bar.Finish();
+  if (!errors.First().empty())
+  {
+    throw RunError(errors.First());
+  }
+  return warnings.First();
+}
+
+template <typename Report, typename Writer>
+void WriteReport(const std::string& path, const Report& report, Writer write)
+{
+  if (path.empty())
+  {
+    return;
+  }
+  std::ofstream json(path);
+  if (json)
+  {
+    write(report, json);
+  }
+  if (!json)
+  {
+    throw RunError("cannot write report '" + path + "'");
+  }
+}
+
+bool IsTwoDimensional(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
+}
+
 int Run(const Arguments& args)
 {
   const auto readStart = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkImageData> image = ReadLabelImage(args.Input);
   const double readSeconds = Seconds(readStart);
+  const bool curve = args.Command == "curve";
+  if (curve && !IsTwoDimensional(image))
+  {
+    throw RunError("'curve' needs a 2D image (one extent of a single slice); '" + args.Input +
+      "' is 3D");
+  }
 
   vtkNew<vtkLabelOctreeMesher> mesher;
   mesher->SetImageToMeshDistance(args.ImageToMeshDistance);
   mesher->SetMeshToImageDistance(args.MeshToImageDistance);
   mesher->SetIncludeBackground(args.IncludeBackground);
   mesher->SetInputData(image);
-
-  VTKMessages errors(mesher, vtkCommand::ErrorEvent);
-  VTKMessages warnings(mesher, vtkCommand::WarningEvent);
-  ProgressBar bar(!args.Quiet);
-  vtkNew<vtkCallbackCommand> progress;
-  progress->SetClientData(&bar);
-  progress->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
-    auto* algorithm = static_cast<vtkAlgorithm*>(caller);
-    const char* stage = algorithm->GetProgressText();
-    static_cast<ProgressBar*>(clientData)->Update(
-      *static_cast<double*>(callData), stage ? stage : "");
-  });
-  mesher->AddObserver(vtkCommand::ProgressEvent, progress);
-  mesher->Update();
-  bar.Finish();
-  if (!errors.First().empty())
-  {
-    throw RunError(errors.First());
-  }
+  const std::string warning = UpdateWithProgress(mesher, args.Quiet);
   vtkUnstructuredGrid* mesh = mesher->GetOutput();
   if (mesh->GetNumberOfCells() == 0)
   {
-    throw RunError(warnings.First().empty() ? "the mesher produced no cells" : warnings.First());
+    throw RunError(warning.empty() ? "the mesher produced no cells" : warning);
   }
 
-  const auto writeStart = std::chrono::steady_clock::now();
-  WriteMesh(mesh, args.Output);
-  const double writeSeconds = Seconds(writeStart);
-
-  RunReport report = MakeReport(args, image, mesh);
-  report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
-  report.Timings.emplace_back("write", writeSeconds);
-  if (!args.Report.empty())
+  if (!curve)
   {
-    std::ofstream json(args.Report);
-    if (json)
+    const auto writeStart = std::chrono::steady_clock::now();
+    WriteMesh(mesh, args.Output);
+    RunReport report = MakeReport(args, image, mesh);
+    report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
+    report.Timings.emplace_back("write", Seconds(writeStart));
+    WriteReport(args.Report, report, WriteJson);
+    if (!args.Quiet)
     {
-      WriteJson(report, json);
+      PrintSummary(report, std::cout);
     }
-    if (!json)
-    {
-      throw RunError("cannot write report '" + args.Report + "'");
-    }
+    return 0;
   }
+
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetSmoothness(args.Smoothness);
+  curver->SetTension(args.Tension);
+  curver->SetMaximumUntanglingSteps(args.MaximumUntanglingSteps);
+  curver->SetQualityIterations(args.QualityIterations);
+  curver->SetInputConnection(mesher->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  // An untangling failure is an error of the filter that still outputs the
+  // marked mesh: write it and the report, then fail.
+  std::string failure;
+  try
+  {
+    UpdateWithProgress(curver, args.Quiet);
+  }
+  catch (const RunError& e)
+  {
+    failure = e.what();
+  }
+  vtkUnstructuredGrid* curved = curver->GetOutput();
+  if (curved->GetNumberOfCells() == 0)
+  {
+    throw RunError(failure.empty() ? "the curver produced no cells" : failure);
+  }
+  const auto writeStart = std::chrono::steady_clock::now();
+  WriteMesh(curved, args.Output);
+  RunReport linear = MakeReport(args, image, mesh);
+  linear.Timings.insert(linear.Timings.begin(), { "read", readSeconds });
+  CurveReport report = MakeCurveReport(linear, args, curved);
+  report.Timings.emplace_back("write", Seconds(writeStart));
+  WriteReport(args.Report, report, WriteCurveJson);
   if (!args.Quiet)
   {
-    PrintSummary(report, std::cout);
+    PrintCurveSummary(report, std::cout);
+  }
+  if (!failure.empty())
+  {
+    throw RunError(failure);
   }
   return 0;
 }

@@ -14,7 +14,7 @@ import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.vtkCommonDataModel import VTK_TETRA, VTK_TRIANGLE, vtkImageData
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, VTK_TETRA, VTK_TRIANGLE, vtkImageData
 from vtkmodules.vtkIOImage import vtkNIFTIImageWriter, vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -282,6 +282,68 @@ def case_quiet():
     assert result.stdout == "" and result.stderr == "", (result.stdout, result.stderr)
     assert read_mesh(path("mesh.vtu")).GetNumberOfCells() > 0
     print("OK: quiet")
+
+
+def two_blobs_png(name):
+    """A disc of label 2 touching a disc of label 5 (an interface between two
+    materials and with the background) on a 48 x 40 image."""
+    y, x = np.mgrid[0:40, 0:48]
+    labels = np.zeros((40, 48), dtype=np.uint8)
+    labels[(x - 16.3) ** 2 + (y - 19.6) ** 2 <= 11.2 ** 2] = 2
+    labels[(x - 32.1) ** 2 + (y - 20.4) ** 2 <= 10.4 ** 2] = 5
+    return write_png(name, labels)
+
+
+def case_curve_good_png():
+    for smoothness in ("1", "2"):
+        mesh, report_file = path(f"curved{smoothness}.vtu"), path(f"curve{smoothness}.json")
+        result = run("curve", two_blobs_png("blobs.png"), "-o", mesh, "--report", report_file,
+                     "--smoothness", smoothness)
+        assert result.returncode == 0, result.stderr
+        assert "proven valid" in result.stdout, result.stdout
+        grid = read_mesh(mesh)
+        types = vtk_to_numpy(grid.GetCellTypesArray())
+        assert np.all(types == VTK_BEZIER_TRIANGLE), set(types)
+        assert all(grid.GetCell(c).GetNumberOfPoints() == 10 for c in range(grid.GetNumberOfCells()))
+        cell_data = grid.GetCellData()
+        assert set(np.unique(vtk_to_numpy(cell_data.GetArray("Material")))) == {2, 5}
+        assert np.all(vtk_to_numpy(cell_data.GetArray("Valid")) == 1)
+        scaled = vtk_to_numpy(cell_data.GetArray("ScaledJacobian"))
+        assert np.all(vtk_to_numpy(cell_data.GetArray("MinimumJacobian")) > 0) or np.all(scaled > 0)
+        with open(report_file) as f:
+            report = json.load(f)
+        assert report["command"] == "curve"
+        assert report["parameters"]["smoothness"] == int(smoothness)
+        assert report["validity"]["valid"] is True and report["validity"]["invalid_cells"] == 0
+        assert report["curved_mesh"]["cells"] == grid.GetNumberOfCells()
+        assert report["curved_mesh"]["control_points"] == grid.GetNumberOfPoints()
+        # Ears (cells with two edges on one smooth chain) are split before curving.
+        split = report["curved_mesh"]["split_ears"]
+        assert report["linear_mesh"]["cells"] + split <= grid.GetNumberOfCells()
+        assert grid.GetNumberOfCells() <= report["linear_mesh"]["cells"] + 2 * split
+        histogram = report["validity"]["scaled_jacobian_histogram"]
+        assert sum(b["cells"] for b in histogram) == grid.GetNumberOfCells()
+        assert histogram[0]["cells"] == 0
+        accuracy = report["accuracy"]
+        assert accuracy["pixels"] == 48 * 40
+        assert {m["material"] for m in accuracy["materials"]} == {2, 5}
+        for kind in ("linear", "curved"):
+            assert 0 < accuracy["misclassified_" + kind] < 0.05 * 48 * 40, accuracy
+        print("OK: C" + smoothness, grid.GetNumberOfCells(), "cells, misclassified",
+              accuracy["misclassified_linear"], "->", accuracy["misclassified_curved"])
+
+
+def case_curve_rejects_3d():
+    image = write_nrrd("ball.nrrd", ball(10, 3.5).astype(np.uint8), "uchar")
+    expect_failure(run("curve", image, "-o", path("out.vtu")), "needs a 2D image")
+
+
+def case_curve_bad_options():
+    png = two_blobs_png("blobs.png")
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--smoothness", "3"), "1 (C1) or 2", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--tension", "1.5"), "[0, 1]", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "30"), "decimator", 2)
+    expect_failure(run("mesh", png, "-o", path("out.vtu"), "--smoothness", "2"), "'curve' only", 2)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "CurveReport.h"
+
+#include "Arguments.h"
+#include "JsonWriter.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+
+namespace labelmesher_cli
+{
+namespace
+{
+
+double Field(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
+{
+  vtkDataArray* array = fd ? fd->GetArray(name) : nullptr;
+  return array && tuple < array->GetNumberOfTuples() ? array->GetComponent(tuple, 0) : 0.0;
+}
+
+long long Count(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
+{
+  return std::llround(Field(fd, name, tuple));
+}
+
+std::string Fixed(double value, int digits)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
+  return buffer;
+}
+
+std::string Percent(long long part, long long whole)
+{
+  return whole > 0 ? Fixed(100.0 * static_cast<double>(part) / static_cast<double>(whole), 3) + " %"
+                   : "-";
+}
+
+} // namespace
+
+CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkUnstructuredGrid* curved)
+{
+  CurveReport r;
+  r.Linear = linear;
+  r.Smoothness = args.Smoothness;
+  r.Tension = args.Tension;
+  r.MaximumUntanglingSteps = args.MaximumUntanglingSteps;
+  r.QualityIterations = args.QualityIterations;
+  r.Cells = curved->GetNumberOfCells();
+  r.ControlPoints = curved->GetNumberOfPoints();
+  vtkFieldData* fd = curved->GetFieldData();
+  r.InvalidBeforeUntangling = Count(fd, "InvalidBeforeUntangling");
+  r.InvalidCells = Count(fd, "InvalidCells");
+  r.UntanglingSteps = Count(fd, "UntanglingSteps");
+  r.InterfaceChains = Count(fd, "InterfaceChains");
+  r.ClosedInterfaceChains = Count(fd, "ClosedInterfaceChains");
+  r.CurvedEdges = Count(fd, "CurvedEdges");
+  r.SplitEars = Count(fd, "SplitEars");
+
+  vtkDataArray* scaled = curved->GetCellData()->GetArray("ScaledJacobian");
+  vtkDataArray* minimum = curved->GetCellData()->GetArray("MinimumJacobian");
+  vtkDataArray* valid = curved->GetCellData()->GetArray("Valid");
+  r.MinimumScaledJacobian = r.Cells > 0 ? 1.0 : 0.0;
+  r.MinimumJacobian = r.Cells > 0 ? HUGE_VAL : 0.0;
+  for (vtkIdType c = 0; scaled && minimum && valid && c < r.Cells; ++c)
+  {
+    const double s = scaled->GetComponent(c, 0);
+    r.MinimumScaledJacobian = std::min(r.MinimumScaledJacobian, s);
+    r.MinimumJacobian = std::min(r.MinimumJacobian, minimum->GetComponent(c, 0));
+    // A cell proven valid by its control net may have a non-positive subdivided
+    // bound; the histogram's first bin is for cells not proven valid.
+    const int bin = valid->GetComponent(c, 0) == 0.0
+      ? 0
+      : std::clamp(static_cast<int>(std::ceil(std::max(s, 1e-12) * 10.0)), 1, 10);
+    ++r.ScaledJacobianHistogram[static_cast<std::size_t>(bin)];
+  }
+
+  r.HasAccuracy = fd->GetArray("MisclassifiedPixelsLinear") != nullptr;
+  if (r.HasAccuracy)
+  {
+    r.Pixels = Count(fd, "Pixels");
+    r.MisclassifiedLinear = Count(fd, "MisclassifiedPixelsLinear");
+    r.MisclassifiedCurved = Count(fd, "MisclassifiedPixelsCurved");
+    if (vtkDataArray* materials = fd->GetArray("AccuracyMaterial"))
+    {
+      for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
+      {
+        auto& entry = r.AccuracyPerMaterial[static_cast<int>(materials->GetComponent(t, 0))];
+        entry.first = { Count(fd, "MissedPixelsLinear", t), Count(fd, "ClaimedPixelsLinear", t) };
+        entry.second = { Count(fd, "MissedPixelsCurved", t), Count(fd, "ClaimedPixelsCurved", t) };
+      }
+    }
+  }
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray("StageName"));
+  vtkDataArray* seconds = fd->GetArray("StageSeconds");
+  for (vtkIdType s = 0; names && seconds && s < names->GetNumberOfValues(); ++s)
+  {
+    r.Timings.emplace_back(names->GetValue(s), seconds->GetComponent(s, 0));
+  }
+  return r;
+}
+
+void PrintCurveSummary(const CurveReport& r, std::ostream& out)
+{
+  PrintSummary(r.Linear, out);
+  out << "Curved mesh: " << r.Cells << " cubic Bezier triangles, " << r.ControlPoints
+      << " control points, C" << r.Smoothness << " boundaries (" << r.InterfaceChains
+      << " chains, " << r.ClosedInterfaceChains << " closed, " << r.CurvedEdges
+      << " curved edges, " << r.SplitEars << " ears split)\n";
+  out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
+      << r.InvalidBeforeUntangling << " invalid before untangling, " << r.InvalidCells
+      << " after; " << r.UntanglingSteps << " load steps)\n";
+  out << "Minimum scaled Jacobian " << Fixed(r.MinimumScaledJacobian, 4) << ", histogram:\n";
+  for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
+  {
+    const std::string label = b == 0 ? "  not proven valid"
+                                     : "  (" + Fixed(0.1 * static_cast<double>(b - 1), 1) + ", " +
+        Fixed(0.1 * static_cast<double>(b), 1) + "]";
+    out << std::left << std::setw(20) << label << std::right << r.ScaledJacobianHistogram[b] << "\n";
+  }
+  if (r.HasAccuracy)
+  {
+    out << "Misclassified pixels (of " << r.Pixels << "): linear " << r.MisclassifiedLinear << " ("
+        << Percent(r.MisclassifiedLinear, r.Pixels) << "), curved " << r.MisclassifiedCurved << " ("
+        << Percent(r.MisclassifiedCurved, r.Pixels) << ")\n";
+    out << "  material  missed lin/cur  claimed lin/cur\n";
+    for (const auto& [material, counts] : r.AccuracyPerMaterial)
+    {
+      out << "  " << std::setw(8) << material << "  " << std::setw(6) << counts.first.Missed << " / "
+          << std::left << std::setw(6) << counts.second.Missed << std::right << "  " << std::setw(6)
+          << counts.first.Claimed << " / " << counts.second.Claimed << "\n";
+    }
+  }
+  out << "Curving time per stage:\n";
+  for (const auto& t : r.Timings)
+  {
+    out << "  " << std::left << std::setw(30) << t.first << std::right << Fixed(t.second, 3)
+        << " s\n";
+  }
+}
+
+void WriteCurveJson(const CurveReport& r, std::ostream& out)
+{
+  JsonWriter j(out);
+  j.BeginObject();
+  j.Key("command").String("curve");
+  j.Key("input").String(r.Linear.Input);
+  j.Key("output").String(r.Linear.Output);
+  j.Key("parameters").BeginObject();
+  j.Key("smoothness").Integer(r.Smoothness);
+  j.Key("tension").Number(r.Tension);
+  j.Key("maximum_untangling_steps").Integer(r.MaximumUntanglingSteps);
+  j.Key("quality_iterations").Integer(r.QualityIterations);
+  j.Key("image_to_mesh").Number(r.Linear.ImageToMeshBound);
+  j.Key("mesh_to_image").Number(r.Linear.MeshToImageBound);
+  j.EndObject();
+  j.Key("linear_mesh").BeginObject();
+  j.Key("cells").Integer(r.Linear.Cells);
+  j.Key("minimum_angle_degrees");
+  if (r.Linear.MinimumAngle)
+    j.Number(*r.Linear.MinimumAngle);
+  else
+    j.Null();
+  j.Key("measured_image_to_mesh");
+  if (r.Linear.MeasuredImageToMesh)
+    j.Number(*r.Linear.MeasuredImageToMesh);
+  else
+    j.Null();
+  j.Key("measured_mesh_to_image");
+  if (r.Linear.MeasuredMeshToImage)
+    j.Number(*r.Linear.MeasuredMeshToImage);
+  else
+    j.Null();
+  j.Key("topology_matches").Bool(r.Linear.TopologyMatches());
+  j.EndObject();
+  j.Key("curved_mesh").BeginObject();
+  j.Key("cell_type").String("bezier_triangle_degree_3");
+  j.Key("cells").Integer(r.Cells);
+  j.Key("control_points").Integer(r.ControlPoints);
+  j.Key("interface_chains").Integer(r.InterfaceChains);
+  j.Key("closed_interface_chains").Integer(r.ClosedInterfaceChains);
+  j.Key("curved_edges").Integer(r.CurvedEdges);
+  j.Key("split_ears").Integer(r.SplitEars);
+  j.EndObject();
+  j.Key("validity").BeginObject();
+  j.Key("valid").Bool(r.Valid());
+  j.Key("invalid_before_untangling").Integer(r.InvalidBeforeUntangling);
+  j.Key("invalid_cells").Integer(r.InvalidCells);
+  j.Key("untangling_steps").Integer(r.UntanglingSteps);
+  j.Key("minimum_scaled_jacobian").Number(r.MinimumScaledJacobian);
+  j.Key("minimum_jacobian").Number(r.MinimumJacobian);
+  j.Key("scaled_jacobian_histogram").BeginArray();
+  for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
+  {
+    j.BeginObject();
+    j.Key("from").Number(b == 0 ? -HUGE_VAL : 0.1 * static_cast<double>(b - 1));
+    j.Key("to").Number(b == 0 ? 0.0 : 0.1 * static_cast<double>(b));
+    j.Key("cells").Integer(r.ScaledJacobianHistogram[b]);
+    j.EndObject();
+  }
+  j.EndArray();
+  j.EndObject();
+  j.Key("accuracy");
+  if (r.HasAccuracy)
+  {
+    j.BeginObject();
+    j.Key("pixels").Integer(r.Pixels);
+    j.Key("misclassified_linear").Integer(r.MisclassifiedLinear);
+    j.Key("misclassified_curved").Integer(r.MisclassifiedCurved);
+    j.Key("materials").BeginArray();
+    for (const auto& [material, counts] : r.AccuracyPerMaterial)
+    {
+      j.BeginObject();
+      j.Key("material").Integer(material);
+      j.Key("missed_linear").Integer(counts.first.Missed);
+      j.Key("missed_curved").Integer(counts.second.Missed);
+      j.Key("claimed_linear").Integer(counts.first.Claimed);
+      j.Key("claimed_curved").Integer(counts.second.Claimed);
+      j.EndObject();
+    }
+    j.EndArray();
+    j.EndObject();
+  }
+  else
+  {
+    j.Null();
+  }
+  j.Key("timings").BeginArray();
+  for (const auto& t : r.Linear.Timings)
+  {
+    j.BeginObject();
+    j.Key("stage").String("mesh: " + t.first);
+    j.Key("seconds").Number(t.second);
+    j.EndObject();
+  }
+  for (const auto& t : r.Timings)
+  {
+    j.BeginObject();
+    j.Key("stage").String("curve: " + t.first);
+    j.Key("seconds").Number(t.second);
+    j.EndObject();
+  }
+  j.EndArray();
+  j.EndObject();
+}
+
+} // namespace labelmesher_cli

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_CurveReport_h
+#define labelmesher_cli_CurveReport_h
+
+/**
+ * @file CurveReport.h
+ * What `labelmesher curve` produced, gathered from vtkBezierCurver's output
+ * (cell data and field data) next to the linear mesh's report, printed as a
+ * text summary or written as JSON.
+ */
+
+#include "Report.h"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+namespace labelmesher_cli
+{
+
+struct PixelCounts
+{
+  long long Missed = 0;  ///< pixels of the label given another material
+  long long Claimed = 0; ///< pixels of other labels given this material
+};
+
+struct CurveReport
+{
+  RunReport Linear; ///< the mesher's run (its Output is the curved file)
+  int Smoothness = 2;
+  double Tension = 0.0;
+  int MaximumUntanglingSteps = 0, QualityIterations = 0;
+  long long Cells = 0, ControlPoints = 0;
+  long long InvalidBeforeUntangling = 0, InvalidCells = 0, UntanglingSteps = 0;
+  long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0;
+  double MinimumScaledJacobian = 0.0, MinimumJacobian = 0.0;
+  /// Scaled Jacobian histogram: bin 0 is <= 0 (not proven valid), bins 1..10
+  /// are (0, 0.1], (0.1, 0.2], ..., (0.9, 1].
+  std::array<long long, 11> ScaledJacobianHistogram{};
+  bool HasAccuracy = false;
+  long long Pixels = 0, MisclassifiedLinear = 0, MisclassifiedCurved = 0;
+  std::map<int, std::pair<PixelCounts, PixelCounts>> AccuracyPerMaterial; ///< linear, curved
+  std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
+
+  bool Valid() const { return this->InvalidCells == 0; }
+};
+
+CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkUnstructuredGrid* curved);
+void PrintCurveSummary(const CurveReport& report, std::ostream& out);
+void WriteCurveJson(const CurveReport& report, std::ostream& out);
+
+} // namespace labelmesher_cli
+
+#endif

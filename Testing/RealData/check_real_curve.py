@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Curve one real 2D label image with `labelmesher curve` (C1 and C2, h = 2) and
+assert what the curver promises, from its JSON report and from the written mesh:
+
+- every cell proven valid (report), no cell marked invalid (cell data);
+- det J of every cell, evaluated here from the written control points with
+  numpy (VTK's Bézier triangle order, finite differences; independent of the
+  C++ proof), has one sign at every sample;
+- cubic Bézier triangles only, Material labels those of the linear mesh;
+- the scaled-Jacobian histogram accounts for every cell;
+- pixel accuracy of the linear and the curved mesh reported.
+
+usage: check_real_curve.py LABELMESHER INPUT WORKDIR
+"""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+# VTK_BEZIER_TRIANGLE degree 3: multi-index (i, j, k) of each point, weights of corners 0, 1, 2.
+ORDER = [(3, 0, 0), (0, 3, 0), (0, 0, 3), (2, 1, 0), (1, 2, 0), (0, 2, 1), (0, 1, 2),
+         (1, 0, 2), (2, 0, 1), (1, 1, 1)]
+FACTORIAL = [1, 1, 2, 6]
+
+
+def evaluate(points, r, s):
+    """Cubic Bézier triangles (n, 10, 2) at parametric (r, s): u = 1 - r - s."""
+    u, v, w = 1.0 - r - s, r, s
+    result = np.zeros((points.shape[0], 2))
+    for p, (i, j, k) in enumerate(ORDER):
+        b = 6.0 / (FACTORIAL[i] * FACTORIAL[j] * FACTORIAL[k]) * u ** i * v ** j * w ** k
+        result += b * points[:, p, :]
+    return result
+
+
+def sampled_jacobians(points, n=8, h=1e-6):
+    values = []
+    for a in range(n + 1):
+        for b in range(n + 1 - a):
+            # Stay h inside the triangle so that central differences are defined.
+            r = min(max(a / n, 2 * h), 1 - 4 * h)
+            s = min(max(b / n, 2 * h), 1 - r - 2 * h)
+            dr = (evaluate(points, r + h, s) - evaluate(points, r - h, s)) / (2 * h)
+            ds = (evaluate(points, r, s + h) - evaluate(points, r, s - h)) / (2 * h)
+            values.append(dr[:, 0] * ds[:, 1] - dr[:, 1] * ds[:, 0])
+    return np.array(values)
+
+
+def check(labelmesher, image, workdir, smoothness):
+    name = os.path.splitext(os.path.basename(image))[0] + "_c" + smoothness
+    mesh = os.path.join(workdir, name + ".vtu")
+    report_path = os.path.join(workdir, name + ".json")
+    run = subprocess.run([labelmesher, "curve", image, "-o", mesh, "--report", report_path,
+                          "--smoothness", smoothness, "--hausdorff", "2"],
+                         capture_output=True, text=True)
+    print(run.stdout)
+    failures = []
+    if run.returncode != 0:
+        failures.append("labelmesher curve failed (%d): %s" % (run.returncode, run.stderr.strip()))
+        return failures
+    with open(report_path) as f:
+        report = json.load(f)
+    validity = report["validity"]
+    if not validity["valid"] or validity["invalid_cells"] != 0:
+        failures.append("report: %d invalid cells" % validity["invalid_cells"])
+    cells = report["curved_mesh"]["cells"]
+    if sum(b["cells"] for b in validity["scaled_jacobian_histogram"]) != cells:
+        failures.append("histogram does not account for every cell")
+    if report["accuracy"] is None:
+        failures.append("no pixel accuracy in the report")
+
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    grid = reader.GetOutput()
+    os.remove(mesh)
+    if grid.GetNumberOfCells() != cells:
+        failures.append("mesh has %d cells, report %d" % (grid.GetNumberOfCells(), cells))
+    if not np.all(vtk_to_numpy(grid.GetCellTypesArray()) == VTK_BEZIER_TRIANGLE):
+        failures.append("cells other than VTK_BEZIER_TRIANGLE")
+    if not np.all(vtk_to_numpy(grid.GetCellData().GetArray("Valid")) == 1):
+        failures.append("cells marked Valid = 0")
+    connectivity = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2][connectivity]
+    jacobians = sampled_jacobians(points)
+    lowest, highest = jacobians.min(), jacobians.max()
+    if not (lowest > 0 or highest < 0):
+        failures.append("sampled det J changes sign: [%g, %g]" % (lowest, highest))
+    print("C%s: %d cells, sampled det J in [%g, %g], misclassified pixels %d -> %d"
+          % (smoothness, cells, lowest, highest, report["accuracy"]["misclassified_linear"],
+             report["accuracy"]["misclassified_curved"]))
+    return failures
+
+
+def main():
+    labelmesher, image, workdir = sys.argv[1:4]
+    os.makedirs(workdir, exist_ok=True)
+    failures = []
+    for smoothness in ("1", "2"):
+        failures += ["C%s: %s" % (smoothness, f) for f in check(labelmesher, image, workdir, smoothness)]
+    if failures:
+        sys.exit("FAILED:\n  " + "\n  ".join(failures))
+    print("OK: every guarantee of the curver holds")
+
+
+if __name__ == "__main__":
+    main()

@@ -6,6 +6,7 @@
 // `curve/mesh` is the curving time over the linear meshing time. See README.md.
 #include "BezierCurver.h"
 #include "LabelOctreeMesher.h"
+#include "MeshSelection.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
 #ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
@@ -41,30 +42,6 @@ std::string CounterName(const std::string& stage)
   return name;
 }
 
-/// The foreground cells of the mesher's 2D mesh (what vtkLabelOctreeMesher outputs by default).
-SimplexMesh Foreground(const SimplexMesh& mesh)
-{
-  SimplexMesh kept;
-  kept.Dimension = 2;
-  std::vector<std::int64_t> newId(mesh.Points.size(), -1);
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-  {
-    if (mesh.Materials[c] == 0)
-      continue;
-    for (int v = 0; v < 3; ++v)
-    {
-      std::int64_t& id = newId[static_cast<std::size_t>(mesh.Cell(c)[v])];
-      if (id < 0)
-      {
-        id = static_cast<std::int64_t>(kept.Points.size());
-        kept.Points.push_back(mesh.Points[static_cast<std::size_t>(mesh.Cell(c)[v])]);
-      }
-      kept.Connectivity.push_back(id);
-    }
-    kept.Materials.push_back(mesh.Materials[c]);
-  }
-  return kept;
-}
 
 /// Meshes `image` at h = `h` (timed as the peer), then times CurveMesh (C2).
 void CurveAndReport(benchmark::State& state, const LabelImage& image, double h)
@@ -85,7 +62,7 @@ void CurveAndReport(benchmark::State& state, const LabelImage& image, double h)
     for (auto _ : state)
     {
       auto start = Clock::now();
-      const SimplexMesh linear = Foreground(MeshLabelImage(image, meshing).Mesh);
+      const SimplexMesh linear = SelectMaterials(MeshLabelImage(image, meshing).Mesh);
       meshSeconds += SecondsSince(start);
       start = Clock::now();
       const CurvingResult result = CurveMesh(linear, curving);
@@ -152,7 +129,7 @@ void BenchmarkRandomImages(benchmark::State& state, int count)
   std::vector<SimplexMesh> meshes;
   MesherParameters meshing; // h = 2
   for (int seed = 0; seed < count; ++seed)
-    meshes.push_back(Foreground(MeshLabelImage(testing::GenerateRandomLabelImage(std::uint64_t(seed), 2), meshing).Mesh));
+    meshes.push_back(SelectMaterials(MeshLabelImage(testing::GenerateRandomLabelImage(std::uint64_t(seed), 2), meshing).Mesh));
   std::size_t cells = 0, invalidMeshes = 0;
   double seconds = 0.0;
   std::int64_t iterations = 0;

@@ -3,6 +3,7 @@
 
 #include "LabelImageConversion.h"
 #include "LabelOctreeMesher.h"
+#include "MeshSelection.h"
 #ifdef LABELMESHER_HAVE_CHECKS
 #include "MeshChecks.h"
 #endif
@@ -224,28 +225,8 @@ int vtkLabelOctreeMesher::RequestData(
   const labelmesher::SimplexMesh& mesh = result.Mesh;
   const int nv = mesh.VerticesPerCell();
   const bool reverse = mesh.Dimension == 3 && placement.ReversesOrientation();
-  labelmesher::SimplexMesh kept; // kept cells, compacted points, index space
-  kept.Dimension = mesh.Dimension;
-  std::vector<std::int64_t> newId(mesh.Points.size(), -1);
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-  {
-    if (mesh.Materials[c] == 0 && !this->IncludeBackground)
-    {
-      continue;
-    }
-    const std::int64_t* cell = mesh.Cell(c);
-    for (int v = 0; v < nv; ++v)
-    {
-      std::int64_t& id = newId[static_cast<std::size_t>(cell[v])];
-      if (id < 0)
-      {
-        id = static_cast<std::int64_t>(kept.Points.size());
-        kept.Points.push_back(mesh.Points[static_cast<std::size_t>(cell[v])]);
-      }
-      kept.Connectivity.push_back(id);
-    }
-    kept.Materials.push_back(mesh.Materials[c]);
-  }
+  // kept cells, compacted points, index space
+  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(mesh, this->IncludeBackground);
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

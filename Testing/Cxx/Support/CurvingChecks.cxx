@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "CurvingChecks.h"
 
+#include "MeshSelection.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -33,28 +35,7 @@ Point2 Unit(const Point2& a)
 
 SimplexMesh ForegroundMesh(const SimplexMesh& mesh)
 {
-  SimplexMesh kept;
-  kept.Dimension = mesh.Dimension;
-  std::vector<std::int64_t> newId(mesh.Points.size(), -1);
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-  {
-    if (mesh.Materials[c] == 0)
-    {
-      continue;
-    }
-    for (int v = 0; v < mesh.VerticesPerCell(); ++v)
-    {
-      std::int64_t& id = newId[static_cast<std::size_t>(mesh.Cell(c)[v])];
-      if (id < 0)
-      {
-        id = static_cast<std::int64_t>(kept.Points.size());
-        kept.Points.push_back(mesh.Points[static_cast<std::size_t>(mesh.Cell(c)[v])]);
-      }
-      kept.Connectivity.push_back(id);
-    }
-    kept.Materials.push_back(mesh.Materials[c]);
-  }
-  return kept;
+  return SelectMaterials(mesh);
 }
 
 double SampledMinimumJacobian(const CubicTriangle& triangle, int n)

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_MeshSelection_h
+#define labelmesher_MeshSelection_h
+
+/**
+ * @file MeshSelection.h
+ * Sub-meshes of a SimplexMesh: the cells of chosen materials, with the points
+ * they use renumbered in order of first use (unused points dropped).
+ */
+
+#include "SimplexMesh.h"
+
+namespace labelmesher
+{
+
+/// The cells of non-zero material (or every cell when `includeBackground`),
+/// with compacted points.
+SimplexMesh SelectMaterials(const SimplexMesh& mesh, bool includeBackground = false);
+
+} // namespace labelmesher
+
+#endif

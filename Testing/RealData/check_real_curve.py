@@ -9,9 +9,12 @@ assert what the curver promises, from its JSON report and from the written mesh:
   C++ proof), has one sign at every sample;
 - cubic Bézier triangles only, Material labels those of the linear mesh;
 - the scaled-Jacobian histogram accounts for every cell;
-- pixel accuracy of the linear and the curved mesh reported.
+- pixel accuracy of the linear and the curved mesh reported;
+- with --check-failure: a run allowed one load step, which cannot untangle
+  every cell, exits 1 with one line on stderr and writes the mesh with exactly
+  the cells it could not prove valid marked Valid = 0.
 
-usage: check_real_curve.py LABELMESHER INPUT WORKDIR
+usage: check_real_curve.py LABELMESHER INPUT WORKDIR [--check-failure]
 """
 import json
 import os
@@ -98,12 +101,43 @@ def check(labelmesher, image, workdir, smoothness):
     return failures
 
 
+def check_loud_failure(labelmesher, image, workdir):
+    """With a single load step some cells stay invalid: the run must fail with
+    one line on stderr, yet write the mesh with exactly those cells marked."""
+    name = os.path.splitext(os.path.basename(image))[0] + "_one_step"
+    mesh = os.path.join(workdir, name + ".vtu")
+    report_path = os.path.join(workdir, name + ".json")
+    run = subprocess.run([labelmesher, "curve", image, "-o", mesh, "--report", report_path,
+                          "--max-untangling-steps", "1", "--quiet"], capture_output=True, text=True)
+    failures = []
+    if run.returncode != 1:
+        return ["one-step run: exit status %d, expected 1 (if one step now suffices, pick a "
+                "harder case)" % run.returncode]
+    if run.stderr.count("\n") != 1 or "could not be proven valid" not in run.stderr:
+        failures.append("one-step run: stderr %r" % run.stderr)
+    with open(report_path) as f:
+        validity = json.load(f)["validity"]
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    marked = int(np.count_nonzero(vtk_to_numpy(reader.GetOutput().GetCellData().GetArray("Valid")) == 0))
+    os.remove(mesh)
+    if validity["valid"] or validity["invalid_cells"] != marked or marked == 0:
+        failures.append("one-step run: report %s, %d cells marked" % (validity, marked))
+    if validity["scaled_jacobian_histogram"][0]["cells"] != marked:
+        failures.append("one-step run: histogram's first bin is not the marked cells")
+    print("one step: %d cells marked invalid, exit status 1: %s" % (marked, run.stderr.strip()))
+    return failures
+
+
 def main():
     labelmesher, image, workdir = sys.argv[1:4]
     os.makedirs(workdir, exist_ok=True)
     failures = []
     for smoothness in ("1", "2"):
         failures += ["C%s: %s" % (smoothness, f) for f in check(labelmesher, image, workdir, smoothness)]
+    if "--check-failure" in sys.argv[4:]:
+        failures += check_loud_failure(labelmesher, image, workdir)
     if failures:
         sys.exit("FAILED:\n  " + "\n  ".join(failures))
     print("OK: every guarantee of the curver holds")

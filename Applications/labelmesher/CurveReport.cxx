@@ -20,27 +20,14 @@ namespace labelmesher_cli
 namespace
 {
 
-double Field(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
-{
-  vtkDataArray* array = fd ? fd->GetArray(name) : nullptr;
-  return array && tuple < array->GetNumberOfTuples() ? array->GetComponent(tuple, 0) : 0.0;
-}
-
 long long Count(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
 {
-  return std::llround(Field(fd, name, tuple));
-}
-
-std::string Fixed(double value, int digits)
-{
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
-  return buffer;
+  return std::llround(FieldValue(fd, name, tuple).value_or(0.0));
 }
 
 std::string Percent(long long part, long long whole)
 {
-  return whole > 0 ? Fixed(100.0 * static_cast<double>(part) / static_cast<double>(whole), 3) + " %"
+  return whole > 0 ? FormatFixed(100.0 * static_cast<double>(part) / static_cast<double>(whole), 3) + " %"
                    : "-";
 }
 
@@ -118,12 +105,12 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
       << r.InvalidBeforeUntangling << " invalid before untangling, " << r.InvalidCells
       << " after; " << r.UntanglingSteps << " load steps)\n";
-  out << "Minimum scaled Jacobian " << Fixed(r.MinimumScaledJacobian, 4) << ", histogram:\n";
+  out << "Minimum scaled Jacobian " << FormatFixed(r.MinimumScaledJacobian, 4) << ", histogram:\n";
   for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
   {
     const std::string label = b == 0 ? "  not proven valid"
-                                     : "  (" + Fixed(0.1 * static_cast<double>(b - 1), 1) + ", " +
-        Fixed(0.1 * static_cast<double>(b), 1) + "]";
+                                     : "  (" + FormatFixed(0.1 * static_cast<double>(b - 1), 1) + ", " +
+        FormatFixed(0.1 * static_cast<double>(b), 1) + "]";
     out << std::left << std::setw(20) << label << std::right << r.ScaledJacobianHistogram[b] << "\n";
   }
   if (r.HasAccuracy)
@@ -142,7 +129,7 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   out << "Curving time per stage:\n";
   for (const auto& t : r.Timings)
   {
-    out << "  " << std::left << std::setw(30) << t.first << std::right << Fixed(t.second, 3)
+    out << "  " << std::left << std::setw(30) << t.first << std::right << FormatFixed(t.second, 3)
         << " s\n";
   }
 }

@@ -19,7 +19,14 @@ namespace labelmesher_cli
 namespace
 {
 
-std::optional<double> Field(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
+long long FieldInt(vtkFieldData* fd, const char* name, vtkIdType tuple)
+{
+  return static_cast<long long>(FieldValue(fd, name, tuple).value_or(0.0));
+}
+
+} // namespace
+
+std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType tuple)
 {
   vtkDataArray* array = fd ? fd->GetArray(name) : nullptr;
   if (!array || tuple >= array->GetNumberOfTuples())
@@ -29,19 +36,12 @@ std::optional<double> Field(vtkFieldData* fd, const char* name, vtkIdType tuple 
   return array->GetComponent(tuple, 0);
 }
 
-long long FieldInt(vtkFieldData* fd, const char* name, vtkIdType tuple)
-{
-  return static_cast<long long>(Field(fd, name, tuple).value_or(0.0));
-}
-
-std::string Fixed(double value, int digits)
+std::string FormatFixed(double value, int digits)
 {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
   return buffer;
 }
-
-} // namespace
 
 bool RunReport::TopologyMatches() const
 {
@@ -78,15 +78,15 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
   }
 
   vtkFieldData* fd = mesh->GetFieldData();
-  r.VoxelSize = Field(fd, "VoxelSize").value_or(1.0);
-  r.MinimumAngle = Field(fd, "MinimumAngle");
-  r.MaximumAngle = Field(fd, "MaximumAngle");
-  r.InvertedCells = Field(fd, "InvertedCells");
-  r.MeasuredImageToMesh = Field(fd, "MeasuredImageToMeshDistance");
-  r.MeasuredMeshToImage = Field(fd, "MeasuredMeshToImageDistance");
-  r.OverSharedFaces = Field(fd, "OverSharedFaces");
-  r.HangingVertices = Field(fd, "HangingVertices");
-  r.NonManifoldBoundaryEdges = Field(fd, "NonManifoldBoundaryEdges");
+  r.VoxelSize = FieldValue(fd, "VoxelSize").value_or(1.0);
+  r.MinimumAngle = FieldValue(fd, "MinimumAngle");
+  r.MaximumAngle = FieldValue(fd, "MaximumAngle");
+  r.InvertedCells = FieldValue(fd, "InvertedCells");
+  r.MeasuredImageToMesh = FieldValue(fd, "MeasuredImageToMeshDistance");
+  r.MeasuredMeshToImage = FieldValue(fd, "MeasuredMeshToImageDistance");
+  r.OverSharedFaces = FieldValue(fd, "OverSharedFaces");
+  r.HangingVertices = FieldValue(fd, "HangingVertices");
+  r.NonManifoldBoundaryEdges = FieldValue(fd, "NonManifoldBoundaryEdges");
   if (vtkDataArray* materials = fd->GetArray("TopologyMaterial"))
   {
     for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
@@ -126,17 +126,17 @@ void PrintSummary(const RunReport& r, std::ostream& out)
   {
     out << "  " << std::setw(6) << entry.first << "  " << entry.second << "\n";
   }
-  const std::string unit = " voxels (1 voxel = " + Fixed(r.VoxelSize, 4) + ")";
+  const std::string unit = " voxels (1 voxel = " + FormatFixed(r.VoxelSize, 4) + ")";
   if (r.Measured())
   {
     out << "Minimum " << (r.MeshDimension == 3 ? "dihedral" : "planar")
-        << " angle: " << Fixed(*r.MinimumAngle, 2) << " deg  (maximum "
-        << Fixed(r.MaximumAngle.value_or(0.0), 2) << " deg, inverted cells "
+        << " angle: " << FormatFixed(*r.MinimumAngle, 2) << " deg  (maximum "
+        << FormatFixed(r.MaximumAngle.value_or(0.0), 2) << " deg, inverted cells "
         << static_cast<long long>(r.InvertedCells.value_or(0.0)) << ")\n";
-    out << "Hausdorff h(I,M): " << Fixed(r.MeasuredImageToMesh.value_or(0.0), 3) << " (bound "
-        << Fixed(r.ImageToMeshBound, 3) << ")" << unit << "\n";
-    out << "Hausdorff h(M,I): " << Fixed(r.MeasuredMeshToImage.value_or(0.0), 3) << " (bound "
-        << Fixed(r.MeshToImageBound, 3) << ")" << unit << "\n";
+    out << "Hausdorff h(I,M): " << FormatFixed(r.MeasuredImageToMesh.value_or(0.0), 3) << " (bound "
+        << FormatFixed(r.ImageToMeshBound, 3) << ")" << unit << "\n";
+    out << "Hausdorff h(M,I): " << FormatFixed(r.MeasuredMeshToImage.value_or(0.0), 3) << " (bound "
+        << FormatFixed(r.MeshToImageBound, 3) << ")" << unit << "\n";
     out << "Conformity: " << static_cast<long long>(r.OverSharedFaces.value_or(0.0))
         << " over-shared faces, " << static_cast<long long>(r.HangingVertices.value_or(0.0))
         << " hanging vertices, " << static_cast<long long>(r.NonManifoldBoundaryEdges.value_or(0.0))
@@ -157,11 +157,11 @@ void PrintSummary(const RunReport& r, std::ostream& out)
   double total = 0.0;
   for (const auto& t : r.Timings)
   {
-    out << "  " << std::left << std::setw(20) << t.first << std::right << Fixed(t.second, 3)
+    out << "  " << std::left << std::setw(20) << t.first << std::right << FormatFixed(t.second, 3)
         << " s\n";
     total += t.second;
   }
-  out << "  " << std::left << std::setw(20) << "total" << std::right << Fixed(total, 3) << " s\n";
+  out << "  " << std::left << std::setw(20) << "total" << std::right << FormatFixed(total, 3) << " s\n";
 }
 
 void WriteJson(const RunReport& r, std::ostream& out)

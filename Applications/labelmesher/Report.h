@@ -8,6 +8,8 @@
  * field data) and printed as a text summary or written as JSON.
  */
 
+#include "vtkType.h"
+
 #include <array>
 #include <cstdint>
 #include <map>
@@ -17,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+class vtkFieldData;
 class vtkImageData;
 class vtkUnstructuredGrid;
 
@@ -58,6 +61,11 @@ struct RunReport
   bool Measured() const { return MinimumAngle.has_value(); }
   bool TopologyMatches() const;
 };
+
+/// Value `tuple` of the one-component field-data array `name`, if present.
+std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType tuple = 0);
+/// `value` with `digits` decimals.
+std::string FormatFixed(double value, int digits);
 
 /// Collects the figures of a finished run.
 RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh);

@@ -3,21 +3,19 @@
 
 #include <algorithm>
 #include <limits>
-#include <unordered_map>
+#include <vector>
 
 namespace labelmesher
 {
 namespace
 {
-struct FaceKeyHash
+/// One cell's use of a face: the face's sorted vertex ids (the third -1 in 2D),
+/// the cell, and the cell's vertex not on the face.
+struct FaceUse
 {
-  std::size_t operator()(const std::array<std::int64_t, 3>& k) const
-  {
-    std::size_t h = 1469598103934665603ull;
-    for (std::int64_t v : k)
-      h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
-    return h;
-  }
+  std::array<std::int64_t, 3> Key;
+  std::int64_t Cell;
+  int Opposite;
 };
 } // namespace
 
@@ -65,7 +63,10 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
     return false;
   };
 
-  std::unordered_map<std::array<std::int64_t, 3>, Use, FaceKeyHash> faces;
+  // Every candidate face once per cell using it, sorted by its vertex ids:
+  // a face used by two cells appears twice in a row. Sorting beats a hash map
+  // of millions of faces (no node per face) and gives a deterministic order.
+  std::vector<FaceUse> uses;
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
     const std::int64_t* cell = mesh.Cell(c);
@@ -76,31 +77,40 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
         possible = i == o || candidate(cell[i]);
       if (!possible)
         continue;
-      std::array<std::int64_t, 3> key{ -1, -1, -1 };
+      FaceUse use{ { -1, -1, -1 }, static_cast<std::int64_t>(c), o };
       int k = 0;
       for (int i = 0; i < n; ++i)
         if (i != o)
-          key[k++] = cell[i];
+          use.Key[k++] = cell[i];
       // Sort the (two or three) ids: the key must not depend on vertex order.
-      if (key[0] > key[1])
-        std::swap(key[0], key[1]);
-      if (k == 3 && key[1] > key[2])
-        std::swap(key[1], key[2]);
-      if (key[0] > key[1])
-        std::swap(key[0], key[1]);
-      auto [it, inserted] = faces.try_emplace(key, Use{ static_cast<std::int64_t>(c), o, -1 });
-      if (inserted)
-        continue;
-      if (mesh.Materials[it->second.Owner] == mesh.Materials[c])
-        faces.erase(it); // interior to one material: not part of the boundary
-      else
-        it->second.Other = static_cast<std::int64_t>(c);
+      if (use.Key[0] > use.Key[1])
+        std::swap(use.Key[0], use.Key[1]);
+      if (k == 3 && use.Key[1] > use.Key[2])
+        std::swap(use.Key[1], use.Key[2]);
+      if (use.Key[0] > use.Key[1])
+        std::swap(use.Key[0], use.Key[1]);
+      uses.push_back(use);
     }
   }
+  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) {
+    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+  });
+  std::vector<Use> faces;
+  for (std::size_t u = 0; u < uses.size();)
+  {
+    std::size_t next = u + 1;
+    while (next < uses.size() && uses[next].Key == uses[u].Key)
+      ++next;
+    const std::int64_t other = next - u >= 2 ? uses[u + 1].Cell : -1;
+    if (other < 0 || mesh.Materials[uses[u].Cell] != mesh.Materials[other])
+      faces.push_back(Use{ uses[u].Cell, uses[u].Opposite, other });
+    u = next;
+  }
+  uses = std::vector<FaceUse>();
   MaterialInterfaces out;
   out.Faces.Dimension = mesh.Dimension - 1;
   out.Faces.Points = mesh.Points;
-  for (const auto& [key, use] : faces)
+  for (const Use& use : faces)
   {
     const std::int32_t inside = mesh.Materials[use.Owner];
     const std::int32_t outside = use.Other >= 0 ? mesh.Materials[use.Other] : 0;

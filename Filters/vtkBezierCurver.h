@@ -49,7 +49,9 @@
  * see below); `StageName` / `StageSeconds`; with an
  * image: `Pixels`, `MisclassifiedPixelsLinear`, `MisclassifiedPixelsCurved`
  * (pixels whose label differs from the mesh material at their centre; cells of
- * material 0 count as outside) and, one tuple per label, `AccuracyMaterial`,
+ * material 0 count as outside; an anisotropic image is counted as meshed, i.e.
+ * resampled to square pixels of its smallest spacing; a centre exactly on an
+ * edge counts for the first cell found) and, one tuple per label, `AccuracyMaterial`,
  * `MissedPixelsLinear`, `MissedPixelsCurved` (its pixels given another material),
  * `ClaimedPixelsLinear`, `ClaimedPixelsCurved` (other pixels given it).
  *

@@ -5,6 +5,7 @@
 // The peer figure is our own linear mesher on the same image in the same run:
 // `curve/mesh` is the curving time over the linear meshing time. See README.md.
 #include "BezierCurver.h"
+#include "BenchmarkSupport.h"
 #include "LabelOctreeMesher.h"
 #include "MeshSelection.h"
 #include "RandomLabelImages.h"
@@ -23,6 +24,8 @@
 #include <vector>
 
 using namespace labelmesher;
+using benchmarks::CounterName;
+using benchmarks::DataDirectory;
 
 namespace
 {
@@ -32,14 +35,6 @@ using Clock = std::chrono::steady_clock;
 double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string CounterName(const std::string& stage)
-{
-  std::string name = "s_";
-  for (char c : stage)
-    name += (c == ' ' || c == '/' || c == ',') ? '_' : c;
-  return name;
 }
 
 
@@ -150,17 +145,6 @@ void BenchmarkRandomImages(benchmark::State& state, int count)
   state.counters["cells"] = double(cells);
   state.counters["cells/s"] = double(cells) * iterations / seconds;
   state.counters["invalid_meshes"] = double(invalidMeshes);
-}
-
-std::string DataDirectory()
-{
-  if (const char* env = std::getenv("LABELMESHER_DATA_DIR"))
-    return env;
-#ifdef LABELMESHER_SHARED_DATA_DIR
-  return LABELMESHER_SHARED_DATA_DIR;
-#else
-  return "../shared/data";
-#endif
 }
 
 void RegisterAll()

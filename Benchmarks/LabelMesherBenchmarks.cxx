@@ -3,6 +3,7 @@
 // voxels) on the Cassini volumes of dissertation section 5.1.1 (100..400 voxels a
 // side), on the shared real label volumes and on a batch of random property-test
 // images. See Benchmarks/README.md for what each counter means.
+#include "BenchmarkSupport.h"
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
@@ -28,6 +29,8 @@
 #include <vector>
 
 using namespace labelmesher;
+using benchmarks::CounterName;
+using benchmarks::DataDirectory;
 
 namespace
 {
@@ -68,14 +71,6 @@ double MaxRssMiB()
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0; // kB on Linux
-}
-
-std::string CounterName(const std::string& stage)
-{
-  std::string name = "s_";
-  for (char c : stage)
-    name += (c == ' ' || c == '/' || c == ',') ? '_' : c;
-  return name;
 }
 
 MesherParameters H2()
@@ -211,17 +206,6 @@ void BenchmarkRandomImages(benchmark::State& state, int dimension, int count)
   state.counters["cells/s"] = cells / seconds;
   state.counters["failures"] = double(failures);
   state.counters["peak_rss_MiB"] = PeakRssMiB();
-}
-
-std::string DataDirectory()
-{
-  if (const char* env = std::getenv("LABELMESHER_DATA_DIR"))
-    return env;
-#ifdef LABELMESHER_SHARED_DATA_DIR
-  return LABELMESHER_SHARED_DATA_DIR;
-#else
-  return "../shared/data";
-#endif
 }
 
 void RegisterAll()

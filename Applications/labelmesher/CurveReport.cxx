@@ -20,11 +20,6 @@ namespace labelmesher_cli
 namespace
 {
 
-long long Count(vtkFieldData* fd, const char* name, vtkIdType tuple = 0)
-{
-  return std::llround(FieldValue(fd, name, tuple).value_or(0.0));
-}
-
 std::string Percent(long long part, long long whole)
 {
   return whole > 0 ? FormatFixed(100.0 * static_cast<double>(part) / static_cast<double>(whole), 3) + " %"
@@ -44,13 +39,13 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
   vtkFieldData* fd = curved->GetFieldData();
-  r.InvalidBeforeUntangling = Count(fd, "InvalidBeforeUntangling");
-  r.InvalidCells = Count(fd, "InvalidCells");
-  r.UntanglingSteps = Count(fd, "UntanglingSteps");
-  r.InterfaceChains = Count(fd, "InterfaceChains");
-  r.ClosedInterfaceChains = Count(fd, "ClosedInterfaceChains");
-  r.CurvedEdges = Count(fd, "CurvedEdges");
-  r.SplitEars = Count(fd, "SplitEars");
+  r.InvalidBeforeUntangling = FieldCount(fd, "InvalidBeforeUntangling");
+  r.InvalidCells = FieldCount(fd, "InvalidCells");
+  r.UntanglingSteps = FieldCount(fd, "UntanglingSteps");
+  r.InterfaceChains = FieldCount(fd, "InterfaceChains");
+  r.ClosedInterfaceChains = FieldCount(fd, "ClosedInterfaceChains");
+  r.CurvedEdges = FieldCount(fd, "CurvedEdges");
+  r.SplitEars = FieldCount(fd, "SplitEars");
 
   vtkDataArray* scaled = curved->GetCellData()->GetArray("ScaledJacobian");
   vtkDataArray* minimum = curved->GetCellData()->GetArray("MinimumJacobian");
@@ -73,16 +68,16 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
   r.HasAccuracy = fd->GetArray("MisclassifiedPixelsLinear") != nullptr;
   if (r.HasAccuracy)
   {
-    r.Pixels = Count(fd, "Pixels");
-    r.MisclassifiedLinear = Count(fd, "MisclassifiedPixelsLinear");
-    r.MisclassifiedCurved = Count(fd, "MisclassifiedPixelsCurved");
+    r.Pixels = FieldCount(fd, "Pixels");
+    r.MisclassifiedLinear = FieldCount(fd, "MisclassifiedPixelsLinear");
+    r.MisclassifiedCurved = FieldCount(fd, "MisclassifiedPixelsCurved");
     if (vtkDataArray* materials = fd->GetArray("AccuracyMaterial"))
     {
       for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
       {
         auto& entry = r.AccuracyPerMaterial[static_cast<int>(materials->GetComponent(t, 0))];
-        entry.first = { Count(fd, "MissedPixelsLinear", t), Count(fd, "ClaimedPixelsLinear", t) };
-        entry.second = { Count(fd, "MissedPixelsCurved", t), Count(fd, "ClaimedPixelsCurved", t) };
+        entry.first = { FieldCount(fd, "MissedPixelsLinear", t), FieldCount(fd, "ClaimedPixelsLinear", t) };
+        entry.second = { FieldCount(fd, "MissedPixelsCurved", t), FieldCount(fd, "ClaimedPixelsCurved", t) };
       }
     }
   }

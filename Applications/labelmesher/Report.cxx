@@ -11,20 +11,12 @@
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 
 namespace labelmesher_cli
 {
-namespace
-{
-
-long long FieldInt(vtkFieldData* fd, const char* name, vtkIdType tuple)
-{
-  return static_cast<long long>(FieldValue(fd, name, tuple).value_or(0.0));
-}
-
-} // namespace
 
 std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType tuple)
 {
@@ -34,6 +26,11 @@ std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType t
     return std::nullopt;
   }
   return array->GetComponent(tuple, 0);
+}
+
+long long FieldCount(vtkFieldData* fd, const char* name, vtkIdType tuple)
+{
+  return std::llround(FieldValue(fd, name, tuple).value_or(0.0));
 }
 
 std::string FormatFixed(double value, int digits)
@@ -93,11 +90,11 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
     {
       TopologyEntry e;
       e.Material = static_cast<int>(materials->GetComponent(t, 0));
-      e.ImageComponents = FieldInt(fd, "ImageComponents", t);
-      e.ImageEuler = FieldInt(fd, "ImageEulerCharacteristic", t);
-      e.MeshComponents = FieldInt(fd, "MeshComponents", t);
-      e.MeshEuler = FieldInt(fd, "MeshEulerCharacteristic", t);
-      e.Matches = FieldInt(fd, "TopologyMatches", t) != 0;
+      e.ImageComponents = FieldCount(fd, "ImageComponents", t);
+      e.ImageEuler = FieldCount(fd, "ImageEulerCharacteristic", t);
+      e.MeshComponents = FieldCount(fd, "MeshComponents", t);
+      e.MeshEuler = FieldCount(fd, "MeshEulerCharacteristic", t);
+      e.Matches = FieldCount(fd, "TopologyMatches", t) != 0;
       r.Topology.push_back(e);
     }
   }

@@ -64,6 +64,8 @@ struct RunReport
 
 /// Value `tuple` of the one-component field-data array `name`, if present.
 std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType tuple = 0);
+/// The same, rounded to an integer (0 when absent): counts stored as doubles.
+long long FieldCount(vtkFieldData* fd, const char* name, vtkIdType tuple = 0);
 /// `value` with `digits` decimals.
 std::string FormatFixed(double value, int digits);
 

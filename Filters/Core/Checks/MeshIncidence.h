@@ -17,13 +17,12 @@
  * different ids are different vertices).
  */
 
+#include "ParallelChunks.h"
 #include "SimplexMesh.h"
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 namespace labelmesher
@@ -144,37 +143,8 @@ void ForEachEdge(const SimplexMesh& mesh, const VertexIncidence& incidence, std:
   }
 }
 
-/// Runs body(thread, begin, end) over chunks of [0, n) on up to `maxThreads`
-/// threads (hardware concurrency, at most 8, by default); single-threaded for small n.
-template <class Body>
-void ParallelChunks(std::size_t n, std::size_t chunk, Body&& body, unsigned maxThreads = 8)
-{
-  unsigned threads = std::max(1u, std::min(maxThreads, std::thread::hardware_concurrency()));
-  if (n <= chunk)
-    threads = 1;
-  std::atomic<std::size_t> next{ 0 };
-  auto worker = [&](unsigned t) {
-    for (;;)
-    {
-      const std::size_t b = next.fetch_add(chunk);
-      if (b >= n)
-        return;
-      body(t, b, std::min(n, b + chunk));
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker, t);
-  worker(0);
-  for (auto& th : pool)
-    th.join();
-}
-
-/// Number of threads ParallelChunks may use.
-inline unsigned MaxThreads()
-{
-  return std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-}
+using labelmesher::MaxThreads;
+using labelmesher::ParallelChunks;
 
 /// One record per (mesh boundary facet, non-zero material m) such that the
 /// facet lies on the boundary of m: some cell of m has it, and either it has

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The quadtree (p4est) instance of the forest code; see OctreeRefinementForest.h.
+#include <p4est_bits.h>
 #include <p4est_extended.h>
 #include <p4est_iterate.h>
+#include <p4est_search.h>
 
 #include <memory>
 #include <string>

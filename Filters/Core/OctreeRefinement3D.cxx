@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The octree (p8est) instance of the forest code; see OctreeRefinementForest.h.
 #include <p4est_to_p8est.h>
+#include <p8est_bits.h>
 #include <p8est_extended.h>
 #include <p8est_iterate.h>
+#include <p8est_search.h>
 
 #include <memory>
 #include <string>

@@ -5,9 +5,11 @@
 // Not a public header: included by exactly those two files.
 
 #include "OctreeRefinement.h"
+#include "ParallelChunks.h"
+
+#include <sys/types.h>
 
 #include <array>
-#include <exception>
 #include <stdexcept>
 
 namespace labelmesher
@@ -39,14 +41,15 @@ struct ForestContext
   const ProgressObserver* Observer;
   double ProgressAt;
   std::size_t Marked = 0;
-  std::size_t Evaluations = 0;
-  /// p4est is C: nothing may unwind through its callbacks. The first error
-  /// (or an abort request) is kept here, later callbacks do nothing, and it is
-  /// rethrown once p4est has returned.
-  std::exception_ptr Failure;
+  /// Leaves accepted since the neighbour rule last ran (copies: p4est moves
+  /// quadrants when it refines). Only they can be in a new size relation.
+  std::vector<p4est_quadrant_t> Fresh;
 };
+// p4est is C: nothing may unwind through its callbacks, so none of them calls
+// the evaluator or the observer; leaves are judged between p4est calls.
 
 QuadrantData& Data(p4est_quadrant_t* q) { return *static_cast<QuadrantData*>(q->p.user_data); }
+const QuadrantData& Data(const p4est_quadrant_t* q) { return *static_cast<const QuadrantData*>(q->p.user_data); }
 ForestContext& Context(p4est_t* p4est) { return *static_cast<ForestContext*>(p4est->user_pointer); }
 
 LeafBox BoxOf(const p4est_quadrant_t* q, int depth)
@@ -70,50 +73,74 @@ void InitializeQuadrant(p4est_t*, p4est_topidx_t, p4est_quadrant_t* q)
   Data(q) = QuadrantData{ 0, 0, 0, 0, 0, LeafState::Unevaluated };
 }
 
-/// Evaluates a leaf once; returns true when it must be split.
-bool EvaluateLeaf(ForestContext& context, p4est_quadrant_t* q)
+/// Judges every leaf not judged yet and marks those that must be split. The
+/// verdicts are independent of each other, so they are computed on all cores
+/// (each into its own slot) and applied in leaf order: the forest does not
+/// depend on the number of threads. Returns the number of leaves marked.
+std::size_t JudgePendingLeaves(p4est_t* forest, ForestContext& context)
 {
-  QuadrantData& data = Data(q);
-  if (data.State == LeafState::MarkedForRefinement)
-    return true;
-  if (data.State == LeafState::Accepted || context.Failure)
-    return false;
-  LeafVerdict verdict;
-  try
+  std::vector<p4est_quadrant_t*> pending;
+  for (p4est_topidx_t t = forest->first_local_tree; t <= forest->last_local_tree; ++t)
   {
-    if (++context.Evaluations % 65536 == 0 && !context.Observer->Report("octree", context.ProgressAt))
+    p4est_tree_t* tree = p4est_tree_array_index(forest->trees, t);
+    for (std::size_t i = 0; i < tree->quadrants.elem_count; ++i)
+    {
+      p4est_quadrant_t* q = p4est_quadrant_array_index(&tree->quadrants, i);
+      if (Data(q).State == LeafState::Unevaluated)
+        pending.push_back(q);
+    }
+  }
+  // Blocks between progress reports; the observer is called on this thread only.
+  const std::size_t block = 65536;
+  std::vector<LeafVerdict> verdicts(std::min(block, pending.size()));
+  std::size_t marked = 0;
+  for (std::size_t begin = 0; begin < pending.size(); begin += block)
+  {
+    const std::size_t end = std::min(pending.size(), begin + block);
+    ParallelChunks(end - begin, 256, [&](unsigned, std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i)
+        verdicts[i] = (*context.Evaluate)(BoxOf(pending[begin + i], context.Depth));
+    });
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      p4est_quadrant_t* q = pending[i];
+      const LeafVerdict& verdict = verdicts[i - begin];
+      QuadrantData& data = Data(q);
+      if (verdict.Refine)
+      {
+        if (q->level >= context.Depth)
+          throw std::logic_error("the leaf evaluator asked to split a single voxel");
+        data.State = LeafState::MarkedForRefinement;
+        ++marked;
+        continue;
+      }
+      data.First = verdict.First;
+      data.Second = verdict.Second;
+      data.RigidFaces = verdict.RigidFaces;
+      data.State = LeafState::Accepted;
+      context.Fresh.push_back(*q);
+    }
+    if (!context.Observer->Report("octree", context.ProgressAt))
       throw AbortRequested{};
-    verdict = (*context.Evaluate)(BoxOf(q, context.Depth));
-    if (verdict.Refine && q->level >= context.Depth)
-      throw std::logic_error("the leaf evaluator asked to split a single voxel");
   }
-  catch (...)
-  {
-    context.Failure = std::current_exception();
-    return false;
-  }
-  if (verdict.Refine)
-  {
-    data.State = LeafState::MarkedForRefinement;
-    return true;
-  }
-  data.First = verdict.First;
-  data.Second = verdict.Second;
-  data.RigidFaces = verdict.RigidFaces;
-  data.State = LeafState::Accepted;
-  return false;
+  return marked;
 }
 
-int RefineCallback(p4est_t* p4est, p4est_topidx_t, p4est_quadrant_t* q)
+int RefineMarked(p4est_t*, p4est_topidx_t, p4est_quadrant_t* q)
 {
-  return EvaluateLeaf(Context(p4est), q) ? 1 : 0;
+  return Data(q).State == LeafState::MarkedForRefinement ? 1 : 0;
 }
 
-void EvaluateVolume(p4est_iter_volume_info_t* info, void*)
+/// Splits the marked leaves, then judges their children and splits again,
+/// level by level, until every leaf is judged and none is marked.
+void RefineMarkedLeaves(p4est_t* forest, ForestContext& context)
 {
-  ForestContext& context = Context(info->p4est);
-  if (Data(info->quad).State == LeafState::Unevaluated && EvaluateLeaf(context, info->quad))
-    ++context.Marked;
+  for (;;)
+  {
+    p4est_refine(forest, 0, RefineMarked, InitializeQuadrant);
+    if (JudgePendingLeaves(forest, context) == 0)
+      return;
+  }
 }
 
 void Mark(ForestContext& context, p4est_quadrant_t* q)
@@ -126,83 +153,92 @@ void Mark(ForestContext& context, p4est_quadrant_t* q)
   }
 }
 
-/// Quadrants around a face or edge and the finest level among them. At most eight quadrants touch a face
-/// (1 + 4) or an edge (4 sides of up to 2): a fixed array, no allocation.
-template <typename Side, int Hanging>
-struct Neighbourhood
+bool IsProper(const p4est_quadrant_t* q) { return Data(q).First != Data(q).Second; }
+
+/// A leaf `larger` than its face or edge neighbour `finer` is split when
+/// `finer` is proper (an intersection vertex of `finer` would be a quarter
+/// point of `larger`), and a proper `larger` is split when the points of
+/// `finer` land on one of its rigid faces; `touched` holds the faces of
+/// `larger` that receive them.
+void ApplyNeighbourRule(ForestContext& context, const p4est_quadrant_t& finer, p4est_quadrant_t* larger, unsigned touched)
 {
-  std::array<p4est_quadrant_t*, 8> Quadrants{};
-  int Count = 0;
-  int FinestLevel = -1;
-
-  explicit Neighbourhood(sc_array_t& sides)
-  {
-    for (std::size_t s = 0; s < sides.elem_count; ++s)
-    {
-      Side* side = static_cast<Side*>(sc_array_index(&sides, s));
-      if (side->is_hanging)
-      {
-        for (int h = 0; h < Hanging; ++h)
-          Add(side->is.hanging.quad[h]);
-      }
-      else
-        Add(side->is.full.quad);
-    }
-  }
-  void Add(p4est_quadrant_t* q)
-  {
-    if (!q || Count == static_cast<int>(Quadrants.size()))
-      return;
-    Quadrants[Count++] = q;
-    FinestLevel = std::max(FinestLevel, static_cast<int>(q->level));
-  }
-};
-
-bool IsProper(p4est_quadrant_t* q) { return Data(q).First != Data(q).Second; }
-
-/// Around a face or edge where leaves of different sizes meet: a leaf larger
-/// than a proper one is split (an intersection vertex would be its quarter
-/// point), and so is a proper leaf whose rigid faces would receive the finer
-/// leaves' points. `touched(q)` gives the faces of the larger leaf q that get
-/// those points.
-template <typename Hood, typename TouchedFaces>
-void MarkAroundSizeChange(ForestContext& context, const Hood& hood, TouchedFaces&& touched)
-{
-  bool finerProper = false;
-  for (int i = 0; i < hood.Count; ++i)
-    finerProper = finerProper || (hood.Quadrants[i]->level == hood.FinestLevel && IsProper(hood.Quadrants[i]));
-  for (int i = 0; i < hood.Count; ++i)
-  {
-    p4est_quadrant_t* q = hood.Quadrants[i];
-    if (q->level >= hood.FinestLevel)
-      continue;
-    if (finerProper || (IsProper(q) && (Data(q).RigidFaces & touched(q)) != 0))
-      Mark(context, q);
-  }
+  if (IsProper(&finer) || (IsProper(larger) && (Data(larger).RigidFaces & touched) != 0))
+    Mark(context, larger);
 }
 
-void CheckFace(p4est_iter_face_info_t* info, void*)
+/// The leaf that contains quadrant `r` (r itself or an ancestor), or null when
+/// the region of r is divided into finer leaves.
+p4est_quadrant_t* LeafContaining(sc_array_t* leaves, const p4est_quadrant_t& r)
 {
-  ForestContext& context = Context(info->p4est);
-  const Neighbourhood<p4est_iter_face_side_t, P4EST_HALF> hood(info->sides);
-  if (hood.Count < 2)
-    return;
-  // A split face puts points on the face and on its edges: every face of the
-  // larger leaf but the opposite one.
-  int face = -1;
-  for (std::size_t s = 0; s < info->sides.elem_count; ++s)
+  const ssize_t i = p4est_find_higher_bound(leaves, &r, 0);
+  if (i < 0)
+    return nullptr;
+  p4est_quadrant_t* q = p4est_quadrant_array_index(leaves, static_cast<std::size_t>(i));
+  return p4est_quadrant_is_equal(q, &r) || p4est_quadrant_is_ancestor(q, &r) ? q : nullptr;
+}
+
+/// The neighbour rule on a balanced forest, for the pairs that involve a fresh
+/// leaf. A pair is always looked at from its finer leaf: a fresh leaf is never
+/// larger than an older neighbour (it is a child of a leaf that was balanced
+/// against it), and a larger neighbour can only lie across the faces and
+/// edges a fresh leaf shares with its parent's boundary.
+void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
+{
+  sc_array_t* leaves = &p4est_tree_array_index(forest->trees, 0)->quadrants;
+  for (const p4est_quadrant_t& fresh : context.Fresh)
   {
-    auto* side = static_cast<p4est_iter_face_side_t*>(sc_array_index(&info->sides, s));
-    if (!side->is_hanging)
-      face = side->face;
-  }
-  MarkAroundSizeChange(context, hood, [face](p4est_quadrant_t*) {
+    p4est_quadrant_t* leaf = LeafContaining(leaves, fresh);
+    if (!leaf || leaf->level != fresh.level || fresh.level == 0)
+      continue; // split again since it was accepted: its children are fresh too
+    const int child = p4est_quadrant_child_id(&fresh);
+    for (int axis = 0; axis < P4EST_DIM; ++axis)
+    {
+      const int face = 2 * axis + ((child >> axis) & 1);
+      p4est_quadrant_t r;
+      p4est_quadrant_face_neighbor(&fresh, face, &r);
+      if (!p4est_quadrant_is_inside_root(&r))
+        continue;
+      p4est_quadrant_t* larger = LeafContaining(leaves, r);
+      if (!larger || larger->level >= fresh.level)
+        continue;
 #ifdef P4_TO_P8
-    return static_cast<unsigned>(0x3f & ~(1u << (face ^ 1)));
+      // A split face puts points on the face and on its edges: every face of
+      // the larger leaf but the opposite one, which is the fresh leaf's `face`.
+      ApplyNeighbourRule(context, *leaf, larger, 0x3fu & ~(1u << face));
 #else
-    return static_cast<unsigned>(1u << face);
+      ApplyNeighbourRule(context, *leaf, larger, 1u << (face ^ 1));
 #endif
-  });
+    }
+#ifdef P4_TO_P8
+    // Edges on the parent's edges: the axis of the edge, and the child's side
+    // in the two other axes.
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const auto others = OtherAxes(axis);
+      const int bits = ((child >> others[0]) & 1) | (((child >> others[1]) & 1) << 1);
+      const int edge = 4 * axis + bits;
+      p4est_quadrant_t r;
+      p8est_quadrant_edge_neighbor(&fresh, edge, &r);
+      if (!p4est_quadrant_is_inside_root(&r))
+        continue;
+      p4est_quadrant_t* larger = LeafContaining(leaves, r);
+      if (!larger || larger->level >= fresh.level)
+        continue;
+      // The edge of r that touches the fresh leaf is edge ^ 3; it is an edge
+      // of the larger leaf only if r sits on that side of it in both other
+      // axes. Otherwise the larger leaf also covers a face neighbour of the
+      // fresh leaf, and the face case above has dealt with it.
+      const int neighbourEdge = edge ^ 3;
+      const int rChild = p4est_quadrant_child_id(&r);
+      const int rBits = ((rChild >> others[0]) & 1) | (((rChild >> others[1]) & 1) << 1);
+      if (larger->level + 1 != fresh.level || rBits != (neighbourEdge & 3))
+        continue;
+      ApplyNeighbourRule(context, *leaf, larger,
+        (1u << p8est_edge_faces[neighbourEdge][0]) | (1u << p8est_edge_faces[neighbourEdge][1]));
+    }
+#endif
+  }
+  context.Fresh.clear();
 }
 
 void RecordFace(p4est_iter_face_info_t* info, void*)
@@ -237,31 +273,6 @@ void RecordFace(p4est_iter_face_info_t* info, void*)
 }
 
 #ifdef P4_TO_P8
-void CheckEdge(p8est_iter_edge_info_t* info, void*)
-{
-  ForestContext& context = Context(info->p4est);
-  const Neighbourhood<p8est_iter_edge_side_t, 2> hood(info->sides);
-  // The larger leaves get a midpoint on this edge: on the two faces holding it.
-  std::array<std::pair<p4est_quadrant_t*, unsigned>, 4> faces{};
-  std::size_t count = 0;
-  for (std::size_t s = 0; s < info->sides.elem_count && count < faces.size(); ++s)
-  {
-    auto* side = static_cast<p8est_iter_edge_side_t*>(sc_array_index(&info->sides, s));
-    if (side->is_hanging || !side->is.full.quad)
-      continue;
-    const int edge = side->edge, axis = edge / 4;
-    const auto others = OtherAxes(axis);
-    faces[count++] = { side->is.full.quad,
-      (1u << (2 * others[0] + (edge & 1))) | (1u << (2 * others[1] + ((edge >> 1) & 1))) };
-  }
-  MarkAroundSizeChange(context, hood, [&](p4est_quadrant_t* q) {
-    for (std::size_t i = 0; i < count; ++i)
-      if (faces[i].first == q)
-        return faces[i].second;
-    return 0u;
-  });
-}
-
 void RecordEdge(p8est_iter_edge_info_t* info, void*)
 {
   bool anyHanging = false;
@@ -304,8 +315,8 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
     throw std::invalid_argument("image too large for the octree: more than 2^" +
       std::to_string(P4EST_QMAXLEVEL) + " voxels a side");
   detail::EnsureMPIInitialized();
-  ForestContext context{ &evaluate, depth, &observer, progressStart, 0, 0, nullptr };
-  #ifdef P4_TO_P8
+  ForestContext context{ &evaluate, depth, &observer, progressStart, 0 };
+#ifdef P4_TO_P8
   std::unique_ptr<p4est_connectivity_t, ForestDeleter> connectivity(p8est_connectivity_new_unitcube());
 #else
   std::unique_ptr<p4est_connectivity_t, ForestDeleter> connectivity(p4est_connectivity_new_unitsquare());
@@ -314,15 +325,14 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
     p4est_new_ext(sc_MPI_COMM_SELF, connectivity.get(), 0, 0, 1, sizeof(QuadrantData), InitializeQuadrant, &context));
 
   const auto report = [&](double fraction) {
-    if (context.Failure)
-      std::rethrow_exception(context.Failure);
     context.ProgressAt = progressStart + (progressEnd - progressStart) * fraction;
     if (!observer.Report("octree", context.ProgressAt))
       throw AbortRequested{};
   };
   // Refine by the image criteria, then alternate balance and the neighbour
   // rule until the forest is stable.
-  p4est_refine(forest.get(), 1, RefineCallback, InitializeQuadrant);
+  if (JudgePendingLeaves(forest.get(), context) != 0)
+    RefineMarkedLeaves(forest.get(), context);
   for (int round = 0;; ++round)
   {
     report(1.0 - 1.0 / (round + 2));
@@ -331,23 +341,12 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
 #else
     p4est_balance(forest.get(), P4EST_CONNECT_FACE, InitializeQuadrant);
 #endif
-    context.Marked = 0;
     // Leaves made by balancing have not been judged yet.
-    p4est_iterate(forest.get(), nullptr, nullptr, EvaluateVolume, nullptr,
-#ifdef P4_TO_P8
-      nullptr,
-#endif
-      nullptr);
-    p4est_iterate(forest.get(), nullptr, nullptr, nullptr, CheckFace,
-#ifdef P4_TO_P8
-      CheckEdge,
-#endif
-      nullptr);
-    if (context.Failure)
-      std::rethrow_exception(context.Failure);
+    context.Marked = JudgePendingLeaves(forest.get(), context);
+    ApplyNeighbourRuleToFresh(forest.get(), context);
     if (context.Marked == 0)
       break;
-    p4est_refine(forest.get(), 1, RefineCallback, InitializeQuadrant);
+    RefineMarkedLeaves(forest.get(), context);
   }
   p4est_iterate(forest.get(), nullptr, nullptr, nullptr, RecordFace,
 #ifdef P4_TO_P8

@@ -385,7 +385,7 @@ public:
       }
     }
     Lo = lo;
-    Size = 4.0;
+    Size = 2.0;
     constexpr double MaxCells = 16.0 * 1024 * 1024;
     for (;;)
     {
@@ -568,8 +568,9 @@ public:
     // Pass 1: bounds of every element; the largest lower bound is achieved.
     std::vector<double> ub(Elements.size());
     std::atomic<double> globalLB{ 0.0 };
-    ParallelFor(Elements.size(), [&](unsigned, std::size_t b, std::size_t e) {
-      Workspace ws(Targets.size());
+    std::vector<Workspace> workspaces(checks_detail::MaxThreads(), Workspace(Targets.size()));
+    ParallelFor(Elements.size(), [&](unsigned t, std::size_t b, std::size_t e) {
+      Workspace& ws = workspaces[t];
       double localLB = 0.0;
       for (std::size_t i = b; i < e; ++i)
       {
@@ -586,8 +587,8 @@ public:
     });
     // Pass 2: refine the elements whose upper bound is not yet tight.
     std::atomic<double> result{ 0.0 };
-    ParallelFor(Elements.size(), [&](unsigned, std::size_t b, std::size_t e) {
-      Workspace ws(Targets.size());
+    ParallelFor(Elements.size(), [&](unsigned t, std::size_t b, std::size_t e) {
+      Workspace& ws = workspaces[t];
       double localResult = 0.0;
       for (std::size_t i = b; i < e; ++i)
       {
@@ -612,8 +613,9 @@ public:
     if (Targets.empty())
       return false;
     std::atomic<bool> ok{ true };
-    ParallelFor(Elements.size(), [&](unsigned, std::size_t b, std::size_t e) {
-      Workspace ws(Targets.size());
+    std::vector<Workspace> workspaces(checks_detail::MaxThreads(), Workspace(Targets.size()));
+    ParallelFor(Elements.size(), [&](unsigned t, std::size_t b, std::size_t e) {
+      Workspace& ws = workspaces[t];
       for (std::size_t i = b; i < e && ok.load(std::memory_order_relaxed); ++i)
       {
         if (Gather(Elements[i], ws, ws.Cands))
@@ -630,6 +632,7 @@ private:
   {
     double Lower, Upper;
   };
+  /// One per thread, reused across chunks: the stamps span every target.
   struct Workspace
   {
     explicit Workspace(std::size_t n)

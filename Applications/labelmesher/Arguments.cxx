@@ -95,6 +95,8 @@ std::string Usage()
          "  --hausdorff H              set both bounds to H voxels\n"
          "  --report FILE.json         write the summary as JSON\n"
          "  --include-background       keep the cells of label 0\n"
+         "  --no-measure               do not measure the output (angles, distances,\n"
+         "                             conformity, topology); saves 1-2x the meshing time\n"
          "  --quiet                    no progress bar, no summary (errors only)\n"
          "curve options:\n"
          "  --smoothness 1|2           continuity of the curved boundaries: C1 or C2  [default 2]\n"
@@ -210,6 +212,11 @@ Arguments ParseArguments(int argc, const char* const* argv)
     {
       throw UsageError("--min-angle needs the decimator (vtkMeshDecimator), which is not built "
                        "yet; the mesher's own bound is 45 degrees in 2D");
+    }
+    else if (word == "--no-measure")
+    {
+      noValue();
+      args.Measure = false;
     }
     else if (word == "--quiet" || word == "-q")
     {

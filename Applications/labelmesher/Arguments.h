@@ -28,6 +28,7 @@ struct Arguments
   double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
   double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
   bool IncludeBackground = false;
+  bool Measure = true;              ///< measure the output (angles, distances, topology)
   // curve only
   int Smoothness = 2;               ///< 1 (C1) or 2 (C2)
   double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless

@@ -148,7 +148,7 @@ void PrintSummary(const RunReport& r, std::ostream& out)
   }
   else
   {
-    out << "Quality, distances and topology: not measured (checks not built)\n";
+    out << "Quality, distances and topology: not measured (--no-measure, or the checks were not built)\n";
   }
   out << "Time per stage:\n";
   double total = 0.0;

@@ -141,6 +141,7 @@ int Run(const Arguments& args)
   mesher->SetImageToMeshDistance(args.ImageToMeshDistance);
   mesher->SetMeshToImageDistance(args.MeshToImageDistance);
   mesher->SetIncludeBackground(args.IncludeBackground);
+  mesher->SetMeasureOutput(args.Measure);
   mesher->SetInputData(image);
   const std::string warning = UpdateWithProgress(mesher, args.Quiet);
   vtkUnstructuredGrid* mesh = mesher->GetOutput();

@@ -284,6 +284,19 @@ def case_quiet():
     print("OK: quiet")
 
 
+def case_no_measure():
+    image = write_nrrd("ball.nrrd", ball(10, 3.5).astype(np.uint8), "uchar")
+    result = run("mesh", image, "-o", path("mesh.vtu"), "--report", path("report.json"), "--no-measure")
+    assert result.returncode == 0, result.stderr
+    assert "not measured" in result.stdout and "Hausdorff" not in result.stdout, result.stdout
+    with open(path("report.json")) as f:
+        report = json.load(f)
+    assert report["measured"] is False, report
+    assert not any(t["stage"].startswith("measure") for t in report["timings"]), report["timings"]
+    assert read_mesh(path("mesh.vtu")).GetNumberOfCells() > 0
+    print("OK: no measure")
+
+
 def two_blobs_png(name):
     """A disc of label 2 touching a disc of label 5 (an interface between two
     materials and with the background) on a 48 x 40 image."""

@@ -113,9 +113,16 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
       return LeafVerdict{ true, 0, 0, 0 };
     if (labels.IsUniform())
       return LeafVerdict{ false, labels.First, labels.First, 0 };
-    const bool accepted = SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second) &&
-      SatisfiesFidelity(image, leaf, labels.First, labels.Second, parameters.ImageToMeshDistance,
+    // Both tests stand alone, so their order only changes the cost. On large
+    // leaves the manifold test walks every voxel (0.35 s for one leaf of
+    // 128^3) and usually passes, while the fidelity test rejects them quickly;
+    // on small leaves it is the other way round.
+    auto manifold = [&] { return SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second); };
+    auto fidelity = [&] {
+      return SatisfiesFidelity(image, leaf, labels.First, labels.Second, parameters.ImageToMeshDistance,
         parameters.MeshToImageDistance);
+    };
+    const bool accepted = leaf.Size >= 8 ? fidelity() && manifold() : manifold() && fidelity();
     if (!accepted)
       return LeafVerdict{ true, 0, 0, 0 };
     const CornerSigns signs = LeafCornerSigns(image, leaf, labels.First, labels.Second);

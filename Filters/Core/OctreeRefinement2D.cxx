@@ -3,7 +3,6 @@
 #include <p4est_bits.h>
 #include <p4est_extended.h>
 #include <p4est_iterate.h>
-#include <p4est_search.h>
 
 #include <memory>
 #include <string>

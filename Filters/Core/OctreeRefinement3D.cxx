@@ -4,7 +4,6 @@
 #include <p8est_bits.h>
 #include <p8est_extended.h>
 #include <p8est_iterate.h>
-#include <p8est_search.h>
 
 #include <memory>
 #include <string>

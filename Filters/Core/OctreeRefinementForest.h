@@ -7,8 +7,7 @@
 #include "OctreeRefinement.h"
 #include "ParallelChunks.h"
 
-#include <sys/types.h>
-
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -97,7 +96,9 @@ std::size_t JudgePendingLeaves(p4est_t* forest, ForestContext& context)
   for (std::size_t begin = 0; begin < pending.size(); begin += block)
   {
     const std::size_t end = std::min(pending.size(), begin + block);
-    ParallelChunks(end - begin, 256, [&](unsigned, std::size_t b, std::size_t e) {
+    // Small chunks when leaves are few: near the root a leaf is costly.
+    const std::size_t chunk = std::clamp<std::size_t>((end - begin) / 64, 1, 256);
+    ParallelChunks(end - begin, chunk, [&](unsigned, std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i)
         verdicts[i] = (*context.Evaluate)(BoxOf(pending[begin + i], context.Depth));
     });
@@ -166,16 +167,37 @@ void ApplyNeighbourRule(ForestContext& context, const p4est_quadrant_t& finer, p
     Mark(context, larger);
 }
 
-/// The leaf that contains quadrant `r` (r itself or an ancestor), or null when
-/// the region of r is divided into finer leaves.
-p4est_quadrant_t* LeafContaining(sc_array_t* leaves, const p4est_quadrant_t& r)
+/// The leaves of the (single) tree by the Morton key of their first voxel:
+/// leaves tile the root, so the leaf holding a voxel is the last one whose key
+/// is not larger, found by one inlined binary search.
+class LeafIndex
 {
-  const ssize_t i = p4est_find_higher_bound(leaves, &r, 0);
-  if (i < 0)
-    return nullptr;
-  p4est_quadrant_t* q = p4est_quadrant_array_index(leaves, static_cast<std::size_t>(i));
-  return p4est_quadrant_is_equal(q, &r) || p4est_quadrant_is_ancestor(q, &r) ? q : nullptr;
-}
+public:
+  LeafIndex(p4est_t* forest, int depth)
+    : Leaves(&p4est_tree_array_index(forest->trees, 0)->quadrants)
+    , Depth(depth)
+    , Keys(Leaves->elem_count)
+  {
+    for (std::size_t i = 0; i < Keys.size(); ++i)
+      Keys[i] = p4est_quadrant_linear_id(p4est_quadrant_array_index(Leaves, i), Depth);
+  }
+
+  /// The leaf that contains quadrant `r` (r itself or an ancestor), or null
+  /// when the region of r is divided into finer leaves.
+  p4est_quadrant_t* Containing(const p4est_quadrant_t& r) const
+  {
+    const auto after = std::upper_bound(Keys.begin(), Keys.end(), p4est_quadrant_linear_id(&r, Depth));
+    if (after == Keys.begin())
+      return nullptr;
+    p4est_quadrant_t* q = p4est_quadrant_array_index(Leaves, static_cast<std::size_t>(after - Keys.begin() - 1));
+    return q->level <= r.level ? q : nullptr;
+  }
+
+private:
+  sc_array_t* Leaves;
+  int Depth;
+  std::vector<std::uint64_t> Keys;
+};
 
 /// The neighbour rule on a balanced forest, for the pairs that involve a fresh
 /// leaf. A pair is always looked at from its finer leaf: a fresh leaf is never
@@ -184,10 +206,10 @@ p4est_quadrant_t* LeafContaining(sc_array_t* leaves, const p4est_quadrant_t& r)
 /// edges a fresh leaf shares with its parent's boundary.
 void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
 {
-  sc_array_t* leaves = &p4est_tree_array_index(forest->trees, 0)->quadrants;
+  const LeafIndex leaves(forest, context.Depth);
   for (const p4est_quadrant_t& fresh : context.Fresh)
   {
-    p4est_quadrant_t* leaf = LeafContaining(leaves, fresh);
+    p4est_quadrant_t* leaf = leaves.Containing(fresh);
     if (!leaf || leaf->level != fresh.level || fresh.level == 0)
       continue; // split again since it was accepted: its children are fresh too
     const int child = p4est_quadrant_child_id(&fresh);
@@ -198,7 +220,7 @@ void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
       p4est_quadrant_face_neighbor(&fresh, face, &r);
       if (!p4est_quadrant_is_inside_root(&r))
         continue;
-      p4est_quadrant_t* larger = LeafContaining(leaves, r);
+      p4est_quadrant_t* larger = leaves.Containing(r);
       if (!larger || larger->level >= fresh.level)
         continue;
 #ifdef P4_TO_P8
@@ -221,7 +243,7 @@ void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
       p8est_quadrant_edge_neighbor(&fresh, edge, &r);
       if (!p4est_quadrant_is_inside_root(&r))
         continue;
-      p4est_quadrant_t* larger = LeafContaining(leaves, r);
+      p4est_quadrant_t* larger = leaves.Containing(r);
       if (!larger || larger->level >= fresh.level)
         continue;
       // The edge of r that touches the fresh leaf is edge ^ 3; it is an edge
@@ -315,7 +337,7 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
     throw std::invalid_argument("image too large for the octree: more than 2^" +
       std::to_string(P4EST_QMAXLEVEL) + " voxels a side");
   detail::EnsureMPIInitialized();
-  ForestContext context{ &evaluate, depth, &observer, progressStart, 0 };
+  ForestContext context{ &evaluate, depth, &observer, progressStart, 0, {} };
 #ifdef P4_TO_P8
   std::unique_ptr<p4est_connectivity_t, ForestDeleter> connectivity(p8est_connectivity_new_unitcube());
 #else

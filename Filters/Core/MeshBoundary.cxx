@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MeshBoundary.h"
 
+#include "ParallelChunks.h"
+
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -47,52 +49,68 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
     }
   }
   // Vertices on the border of the mesh: the ends of faces used once. Found on
-  // the fly below: a face with an unmixed vertex is still hashed when that
+  // the fly below: a face with an unmixed vertex is still kept when that
   // vertex lies on the bounding box, where the mesh may end.
   Point3 lo = mesh.Points.empty() ? Point3{ 0, 0, 0 } : mesh.Points[0], hi = lo;
   for (const Point3& p : mesh.Points)
     for (int a = 0; a < 3; ++a)
       lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  auto candidate = [&](std::int64_t v) {
-    if (vertexMaterial[v] == kMixed)
-      return true;
-    const Point3& p = mesh.Points[v];
+  std::vector<unsigned char> candidate(mesh.Points.size());
+  for (std::size_t v = 0; v < candidate.size(); ++v)
+  {
+    bool onBox = false;
     for (int a = 0; a < mesh.Dimension; ++a)
-      if (p[a] == lo[a] || p[a] == hi[a])
-        return true;
-    return false;
-  };
+      onBox = onBox || mesh.Points[v][a] == lo[a] || mesh.Points[v][a] == hi[a];
+    candidate[v] = vertexMaterial[v] == kMixed || onBox;
+  }
 
   // Every candidate face once per cell using it, sorted by its vertex ids:
   // a face used by two cells appears twice in a row. Sorting beats a hash map
   // of millions of faces (no node per face) and gives a deterministic order.
-  std::vector<FaceUse> uses;
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-  {
-    const std::int64_t* cell = mesh.Cell(c);
-    for (int o = 0; o < n; ++o)
+  // Runs of cells are scanned on all cores and concatenated in cell order.
+  const std::size_t run = 65536;
+  std::vector<std::vector<FaceUse>> runs((mesh.NumberOfCells() + run - 1) / run);
+  ParallelChunks(mesh.NumberOfCells(), run, [&](unsigned, std::size_t begin, std::size_t end) {
+    std::vector<FaceUse>& out = runs[begin / run];
+    for (std::size_t c = begin; c < end; ++c)
     {
-      bool possible = true;
-      for (int i = 0; i < n && possible; ++i)
-        possible = i == o || candidate(cell[i]);
-      if (!possible)
-        continue;
-      FaceUse use{ { -1, -1, -1 }, static_cast<std::int64_t>(c), o };
-      int k = 0;
+      const std::int64_t* cell = mesh.Cell(c);
+      int candidates = 0;
       for (int i = 0; i < n; ++i)
-        if (i != o)
-          use.Key[k++] = cell[i];
-      // Sort the (two or three) ids: the key must not depend on vertex order.
-      if (use.Key[0] > use.Key[1])
-        std::swap(use.Key[0], use.Key[1]);
-      if (k == 3 && use.Key[1] > use.Key[2])
-        std::swap(use.Key[1], use.Key[2]);
-      if (use.Key[0] > use.Key[1])
-        std::swap(use.Key[0], use.Key[1]);
-      uses.push_back(use);
+        candidates += candidate[cell[i]];
+      if (candidates < n - 1)
+        continue;
+      for (int o = 0; o < n; ++o)
+      {
+        if (candidates == n - 1 && candidate[cell[o]])
+          continue; // the face without o has a vertex that is not a candidate
+        FaceUse use{ { -1, -1, -1 }, static_cast<std::int64_t>(c), o };
+        int k = 0;
+        for (int i = 0; i < n; ++i)
+          if (i != o)
+            use.Key[k++] = cell[i];
+        // Sort the (two or three) ids: the key must not depend on vertex order.
+        if (use.Key[0] > use.Key[1])
+          std::swap(use.Key[0], use.Key[1]);
+        if (k == 3 && use.Key[1] > use.Key[2])
+          std::swap(use.Key[1], use.Key[2]);
+        if (use.Key[0] > use.Key[1])
+          std::swap(use.Key[0], use.Key[1]);
+        out.push_back(use);
+      }
     }
+  });
+  std::vector<FaceUse> uses;
+  std::size_t total = 0;
+  for (const auto& r : runs)
+    total += r.size();
+  uses.reserve(total);
+  for (auto& r : runs)
+  {
+    uses.insert(uses.end(), r.begin(), r.end());
+    r = std::vector<FaceUse>();
   }
-  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) {
+  ParallelSort(uses, [](const FaceUse& a, const FaceUse& b) {
     return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
   });
   std::vector<Use> faces;

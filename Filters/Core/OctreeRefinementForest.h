@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 namespace labelmesher
@@ -79,6 +80,7 @@ void InitializeQuadrant(p4est_t*, p4est_topidx_t, p4est_quadrant_t* q)
 std::size_t JudgePendingLeaves(p4est_t* forest, ForestContext& context)
 {
   std::vector<p4est_quadrant_t*> pending;
+  double pendingVoxels = 0.0; // what judging costs, roughly
   for (p4est_topidx_t t = forest->first_local_tree; t <= forest->last_local_tree; ++t)
   {
     p4est_tree_t* tree = p4est_tree_array_index(forest->trees, t);
@@ -86,9 +88,14 @@ std::size_t JudgePendingLeaves(p4est_t* forest, ForestContext& context)
     {
       p4est_quadrant_t* q = p4est_quadrant_array_index(&tree->quadrants, i);
       if (Data(q).State == LeafState::Unevaluated)
+      {
         pending.push_back(q);
+        pendingVoxels += std::pow(2.0, P4EST_DIM * (context.Depth - q->level));
+      }
     }
   }
+  // Starting threads costs tens of microseconds: not worth it for a few small leaves.
+  const unsigned threads = pendingVoxels < 65536 ? 1u : MaxThreads();
   // Blocks between progress reports; the observer is called on this thread only.
   const std::size_t block = 65536;
   std::vector<LeafVerdict> verdicts(std::min(block, pending.size()));
@@ -98,10 +105,13 @@ std::size_t JudgePendingLeaves(p4est_t* forest, ForestContext& context)
     const std::size_t end = std::min(pending.size(), begin + block);
     // Small chunks when leaves are few: near the root a leaf is costly.
     const std::size_t chunk = std::clamp<std::size_t>((end - begin) / 64, 1, 256);
-    ParallelChunks(end - begin, chunk, [&](unsigned, std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i)
-        verdicts[i] = (*context.Evaluate)(BoxOf(pending[begin + i], context.Depth));
-    });
+    ParallelChunks(
+      end - begin, chunk,
+      [&](unsigned, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i)
+          verdicts[i] = (*context.Evaluate)(BoxOf(pending[begin + i], context.Depth));
+      },
+      threads);
     for (std::size_t i = begin; i < end; ++i)
     {
       p4est_quadrant_t* q = pending[i];

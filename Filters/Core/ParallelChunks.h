@@ -4,8 +4,8 @@
 
 /**
  * @file ParallelChunks.h
- * The one loop the core runs on several cores: independent work items taken
- * in chunks by a few std::threads. Callers make results independent of the
+ * What the core runs on several cores: a loop over independent work items
+ * taken in chunks by a few std::threads, and a sort. Callers make results independent of the
  * thread count (each item writes its own slot, or per-thread partials are
  * merged in a fixed order), so output never depends on scheduling.
  */
@@ -67,6 +67,29 @@ void ParallelChunks(std::size_t n, std::size_t chunk, Body&& body, unsigned maxT
     th.join();
   if (failure)
     std::rethrow_exception(failure);
+}
+
+/// std::sort on up to MaxThreads() threads: contiguous parts sorted at once,
+/// then merged pairwise. With a strict weak order that ties no two distinct
+/// items, the result is the same as std::sort's.
+template <class T, class Less>
+void ParallelSort(std::vector<T>& items, Less less)
+{
+  std::size_t parts = 1;
+  while (parts * 2 <= MaxThreads() && items.size() / (parts * 2) >= 65536)
+    parts *= 2;
+  std::vector<std::size_t> bounds(parts + 1);
+  for (std::size_t p = 0; p <= parts; ++p)
+    bounds[p] = items.size() * p / parts;
+  ParallelChunks(parts, 1, [&](unsigned, std::size_t b, std::size_t) {
+    std::sort(items.begin() + bounds[b], items.begin() + bounds[b + 1], less);
+  });
+  for (std::size_t width = 1; width < parts; width *= 2)
+    ParallelChunks(parts / (2 * width), 1, [&](unsigned, std::size_t b, std::size_t) {
+      const std::size_t first = bounds[2 * width * b], middle = bounds[2 * width * b + width],
+                        last = bounds[2 * width * (b + 1)];
+      std::inplace_merge(items.begin() + first, items.begin() + middle, items.begin() + last, less);
+    });
 }
 
 } // namespace labelmesher

@@ -111,13 +111,22 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
     r = std::vector<FaceUse>();
   }
   ParallelSort(uses, [](const FaceUse& a, const FaceUse& b) {
-    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+    // Spelled out: std::array's operators go through memcmp, a tenth of the
+    // whole mesher's time on digimouse.
+    if (a.Key[0] != b.Key[0])
+      return a.Key[0] < b.Key[0];
+    if (a.Key[1] != b.Key[1])
+      return a.Key[1] < b.Key[1];
+    if (a.Key[2] != b.Key[2])
+      return a.Key[2] < b.Key[2];
+    return a.Cell < b.Cell;
   });
   std::vector<Use> faces;
   for (std::size_t u = 0; u < uses.size();)
   {
     std::size_t next = u + 1;
-    while (next < uses.size() && uses[next].Key == uses[u].Key)
+    while (next < uses.size() && uses[next].Key[0] == uses[u].Key[0] && uses[next].Key[1] == uses[u].Key[1] &&
+      uses[next].Key[2] == uses[u].Key[2])
       ++next;
     const std::int64_t other = next - u >= 2 ? uses[u + 1].Cell : -1;
     if (other < 0 || mesh.Materials[uses[u].Cell] != mesh.Materials[other])

@@ -38,6 +38,35 @@ inline std::int32_t LatticeLabel(const LabelImage& image, int i, int j, int k)
   return first;
 }
 
+/// Whether the lattice segment from point (i, j, k) to its neighbour one step
+/// along `axis` lies in the image boundary: the voxels around it (four in 3D,
+/// two in 2D) are not all of one label. Two 0-points next to each other are
+/// joined by the image boundary along the segment only when this holds;
+/// otherwise they are touched by separate pieces of it.
+inline bool LatticeSegmentOnBoundary(const LabelImage& image, int i, int j, int k, int axis)
+{
+  const bool flat = image.Dimension() == 2;
+  int p[3] = { i, j, k };
+  int around[2], count = 0;
+  for (int a = 0; a < (flat ? 2 : 3); ++a)
+    if (a != axis)
+      around[count++] = a;
+  // The voxels with index p[axis] along the axis, p - 1 or p across it.
+  std::int32_t first = 0;
+  for (int c = 0; c < (1 << count); ++c)
+  {
+    int v[3] = { p[0], p[1], flat ? 0 : p[2] };
+    for (int b = 0; b < count; ++b)
+      v[around[b]] = p[around[b]] - 1 + ((c >> b) & 1);
+    const std::int32_t label = image.At(v[0], v[1], v[2]);
+    if (c == 0)
+      first = label;
+    else if (label != first)
+      return true;
+  }
+  return false;
+}
+
 inline int SignOf(std::int32_t label, std::int32_t first, std::int32_t second)
 {
   return label == first ? 1 : (label == second ? -1 : 0);

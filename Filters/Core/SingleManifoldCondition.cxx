@@ -102,6 +102,13 @@ public:
                     Leaf.Dimension == 2 ? 0 : Leaf.Origin[2] + c),
       First, Second);
   }
+  /// The segment from lattice point (a, b, c) one step along `axis` lies in the
+  /// image boundary (LatticeSegmentOnBoundary).
+  bool Linked(int a, int b, int c, int axis) const
+  {
+    return LatticeSegmentOnBoundary(
+      Image, Leaf.Origin[0] + a, Leaf.Origin[1] + b, Leaf.Dimension == 2 ? 0 : Leaf.Origin[2] + c, axis);
+  }
 
 private:
   const LabelImage& Image;
@@ -111,9 +118,15 @@ private:
 
 /// Along one leaf edge the image boundary is empty (both ends of one label),
 /// one run of boundary points between ends of different labels, or one run
-/// starting at a 0-end. Two runs (Figure 9a), or two 0-ends, fail.
-bool EdgeIsSimple(const std::vector<int>& signs)
+/// starting at a 0-end. Two runs (Figure 9a), or two 0-ends, fail. A run is
+/// one piece of the boundary only if the boundary also joins its points along
+/// the edge (`linked[t]`: the segment from point t to t + 1 lies in it);
+/// otherwise separate pieces touch the edge at neighbouring points.
+bool EdgeIsSimple(const std::vector<int>& signs, const std::vector<unsigned char>& linked)
 {
+  for (std::size_t t = 0; t + 1 < signs.size(); ++t)
+    if (signs[t] == 0 && signs[t + 1] == 0 && !linked[t])
+      return false;
   std::vector<int> runs;
   for (int v : signs)
     if (runs.empty() || runs.back() != v)
@@ -125,26 +138,25 @@ bool EdgeIsSimple(const std::vector<int>& signs)
   return runs.size() == 3 && runs[1] == 0 && runs[0] != 0 && runs[2] != 0 && runs[0] != runs[2];
 }
 
-/// Components of the lattice points of class `value` on an n x n face grid
-/// (4-connected, or 8-connected for the boundary class 0).
-int Components(const std::vector<int>& grid, int n, int value)
+/// Components of the lattice points of class `value` on an n x n face grid,
+/// 4-connected. For the boundary class 0, two neighbours are connected only
+/// through a segment that lies in the image boundary (`linkedA`, `linkedB`:
+/// from point (a, b) one step along a, along b), so that separate pieces of
+/// the boundary touching the face count separately.
+int Components(const std::vector<int>& grid, int n, int value, const std::vector<unsigned char>& linkedA = {},
+  const std::vector<unsigned char>& linkedB = {})
 {
   UnionFind uf(grid.size());
-  const bool eight = value == 0;
+  const bool boundary = value == 0;
   for (int b = 0; b < n; ++b)
     for (int a = 0; a < n; ++a)
     {
       if (grid[b * n + a] != value)
         continue;
-      for (int db = 0; db <= 1; ++db)
-        for (int da = -1; da <= 1; ++da)
-        {
-          if ((db == 0 && da <= 0) || (!eight && da != 0 && db != 0))
-            continue;
-          const int na = a + da, nb = b + db;
-          if (na >= 0 && na < n && nb < n && grid[nb * n + na] == value)
-            uf.Unite(b * n + a, nb * n + na);
-        }
+      if (a + 1 < n && grid[b * n + a + 1] == value && (!boundary || linkedA[b * n + a]))
+        uf.Unite(b * n + a, b * n + a + 1);
+      if (b + 1 < n && grid[(b + 1) * n + a] == value && (!boundary || linkedB[b * n + a]))
+        uf.Unite(b * n + a, (b + 1) * n + a);
     }
   int count = 0;
   for (std::size_t i = 0; i < grid.size(); ++i)
@@ -156,21 +168,27 @@ int Components(const std::vector<int>& grid, int n, int value)
 /// every edge simply (EdgeIsSimple); every face either not crossed (corners of
 /// one label, possibly 0-corners), with no boundary point inside it, or
 /// crossed once, with no two adjacent 0-corners, with the boundary points one
-/// 8-connected set separating one 4-connected set of each label, and every
+/// set (connected through boundary segments) separating one 4-connected set
+/// of each label, and every
 /// 0-corner of the leaf a transition of the intersection polygon (checked
 /// with the polygon, ConeSurfacePatch). 2D: the sides, and two transitions.
 bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
 {
   const int s = leaf.Size, n = s + 1;
   std::vector<int> line(n);
+  std::vector<unsigned char> linked(n);
   if (leaf.Dimension == 2)
   {
     for (int axis = 0; axis < 2; ++axis)
       for (int side = 0; side < 2; ++side)
       {
+        // The side at `side` across `axis` runs along the other axis.
         for (int t = 0; t < n; ++t)
+        {
           line[t] = axis == 0 ? sign(side * s, t, 0) : sign(t, side * s, 0);
-        if (!EdgeIsSimple(line))
+          linked[t] = t < s && (axis == 0 ? sign.Linked(side * s, t, 0, 1) : sign.Linked(t, side * s, 0, 0));
+        }
+        if (!EdgeIsSimple(line, linked))
           return false;
       }
     return true;
@@ -188,12 +206,14 @@ bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
           p[others[0]] = lo * s;
           p[others[1]] = hi * s;
           line[t] = sign(p[0], p[1], p[2]);
+          linked[t] = t < s && sign.Linked(p[0], p[1], p[2], axis);
         }
-        if (!EdgeIsSimple(line))
+        if (!EdgeIsSimple(line, linked))
           return false;
       }
   }
   std::vector<int> grid(static_cast<std::size_t>(n) * n);
+  std::vector<unsigned char> linkedA(grid.size()), linkedB(grid.size());
   for (int face = 0; face < 6; ++face)
   {
     const int axis = face / 2, side = face % 2;
@@ -207,6 +227,8 @@ bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
         p[others[1]] = b;
         const int v = sign(p[0], p[1], p[2]);
         grid[b * n + a] = v;
+        linkedA[b * n + a] = v == 0 && a < s && sign.Linked(p[0], p[1], p[2], others[0]);
+        linkedB[b * n + a] = v == 0 && b < s && sign.Linked(p[0], p[1], p[2], others[1]);
       }
     const std::array<int, 4> ring{ grid[0], grid[s], grid[n * n - 1], grid[s * n] };
     std::array<int, 8> where{};
@@ -227,7 +249,7 @@ bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
             return false;
     }
     else if (transitions != 2 || Components(grid, n, 1) != 1 || Components(grid, n, -1) != 1 ||
-      Components(grid, n, 0) != 1)
+      Components(grid, n, 0, linkedA, linkedB) != 1)
       return false;
   }
   return true;

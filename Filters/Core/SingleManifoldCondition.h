@@ -16,9 +16,13 @@
  *    Figure 9a);
  *  - every face is not crossed (one label, its boundary points only at its
  *    0-corners and the edge runs hanging from them), or crossed once: no
- *    saddle, no two adjacent 0-corners, the boundary points one 8-connected
- *    set between one 4-connected set of each label (this excludes the island
- *    of Figure 9b);
+ *    saddle, no two adjacent 0-corners, the boundary points one connected set
+ *    between one 4-connected set of each label (this excludes the island of
+ *    Figure 9b);
+ *  - boundary points on an edge or face are connected only through lattice
+ *    segments that lie in the image boundary themselves: neighbouring
+ *    0-points can belong to separate pieces of the boundary (one of them
+ *    touching the leaf from outside), and then the leaf holds two pieces;
  *  - inside the leaf, the voxel faces between the two labels form one
  *    topological disk: a 2-manifold with boundary (both labels face-connected
  *    around every voxel vertex, which excludes pinched edges and vertices),

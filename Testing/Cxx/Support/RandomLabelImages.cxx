@@ -49,6 +49,8 @@ const char* ToString(RandomFeature feature)
       return "border";
     case RandomFeature::Speckle:
       return "speckle";
+    case RandomFeature::Box:
+      return "box";
   }
   return "?";
 }
@@ -594,6 +596,8 @@ RandomLabelImage GenerateRandomLabelImageWithDescription(
       case RandomFeature::Speckle:
         text = PaintSpeckle(canvas, labels);
         break;
+      case RandomFeature::Box:
+        throw std::invalid_argument("GenerateRandomLabelImage: boxes come from GenerateRandomBoxImage");
     }
     result.Features.push_back({ f, text });
   }
@@ -650,6 +654,42 @@ bool RandomLabelImage::Has(RandomFeature feature) const
 {
   return std::any_of(
     Features.begin(), Features.end(), [&](const RandomFeatureRecord& r) { return r.Kind == feature; });
+}
+
+RandomLabelImage GenerateRandomBoxImage(std::uint64_t seed, int dimension, int size)
+{
+  if ((dimension != 2 && dimension != 3) || size < 2)
+    throw std::invalid_argument("GenerateRandomBoxImage: dimension must be 2 or 3, size at least 2");
+  RandomLabelImage result;
+  result.Seed = seed;
+  SeededRandom random(seed * 0xD1B54A32D192ED03ull + static_cast<std::uint64_t>(dimension));
+  result.Image = LabelImage(size, size, dimension == 3 ? size : 1);
+  const int boxes = int(random.Int(3, 10));
+  for (int b = 0;; ++b)
+  {
+    const bool foreground = std::any_of(
+      result.Image.Labels.begin(), result.Image.Labels.end(), [](std::int32_t l) { return l != 0; });
+    if (b >= boxes && foreground)
+      break; // else one more box, until something is left in the foreground
+    int lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+    for (int a = 0; a < dimension; ++a)
+    {
+      lo[a] = int(random.Int(0, size - 1));
+      hi[a] = random.Chance(0.4) ? lo[a] : std::min(size - 1, lo[a] + int(random.Int(1, size / 2)));
+    }
+    const std::int32_t label = b < boxes && random.Chance(0.25) ? 0 : (random.Chance(0.5) ? 1 : 4);
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i)
+          result.Image(i, j, k) = label;
+    std::ostringstream text;
+    text << "box label=" << label << " [" << lo[0] << "," << hi[0] << "]x[" << lo[1] << "," << hi[1] << "]";
+    if (dimension == 3)
+      text << "x[" << lo[2] << "," << hi[2] << "]";
+    result.Features.push_back({ RandomFeature::Box, text.str() });
+  }
+  result.LabelIds = PresentLabels(result.Image);
+  return result;
 }
 
 std::string RandomLabelImage::Describe() const

@@ -73,6 +73,7 @@ enum class RandomFeature
   Tunnel,          ///< a solid torus or a blob with a hole drilled through (2D: a ring)
   BorderContact,   ///< a blob or slab cut by the image border
   Speckle,         ///< isolated single voxels of random labels
+  Box,             ///< an axis-aligned box (GenerateRandomBoxImage only)
 };
 const char* ToString(RandomFeature feature);
 
@@ -125,6 +126,16 @@ RandomLabelImage GenerateRandomLabelImageWithDescription(
 /// The image for `seed` (dimension 2 or 3).
 LabelImage GenerateRandomLabelImage(
   std::uint64_t seed, int dimension, const RandomImageOptions& options = {});
+
+/// A `size`-voxel square (2D) or cube (3D) holding 3 to 10 axis-aligned boxes
+/// painted over each other, each a random label of {1, 4} (two labels) or
+/// background (never all of it), one voxel thick along each axis with
+/// probability 0.4 (plates, lines, single voxels): flat
+/// interfaces that meet along edges and at corners, one-voxel gaps, and pieces
+/// of one label touching a leaf from outside at a single lattice point. Such
+/// contacts are rare in GenerateRandomLabelImage's smooth shapes. Seeded like
+/// it (SeededRandom); the description names the boxes.
+RandomLabelImage GenerateRandomBoxImage(std::uint64_t seed, int dimension, int size);
 
 /// Describe() of the image for `seed`: what a failing seed contains.
 std::string DescribeRandomLabelImage(

@@ -203,6 +203,16 @@ public:
     return q->level <= r.level ? q : nullptr;
   }
 
+  /// The leaf containing the neighbour position `r` of a leaf at `level`
+  /// when that leaf is larger; null when it is not, or r lies outside the root.
+  p4est_quadrant_t* LargerAt(const p4est_quadrant_t& r, int level) const
+  {
+    if (!p4est_quadrant_is_inside_root(&r))
+      return nullptr;
+    p4est_quadrant_t* q = Containing(r);
+    return q && q->level < level ? q : nullptr;
+  }
+
 private:
   sc_array_t* Leaves;
   int Depth;
@@ -228,10 +238,8 @@ void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
       const int face = 2 * axis + ((child >> axis) & 1);
       p4est_quadrant_t r;
       p4est_quadrant_face_neighbor(&fresh, face, &r);
-      if (!p4est_quadrant_is_inside_root(&r))
-        continue;
-      p4est_quadrant_t* larger = leaves.Containing(r);
-      if (!larger || larger->level >= fresh.level)
+      p4est_quadrant_t* larger = leaves.LargerAt(r, fresh.level);
+      if (!larger)
         continue;
 #ifdef P4_TO_P8
       // A split face puts points on the face and on its edges: every face of
@@ -251,10 +259,8 @@ void ApplyNeighbourRuleToFresh(p4est_t* forest, ForestContext& context)
       const int edge = 4 * axis + bits;
       p4est_quadrant_t r;
       p8est_quadrant_edge_neighbor(&fresh, edge, &r);
-      if (!p4est_quadrant_is_inside_root(&r))
-        continue;
-      p4est_quadrant_t* larger = leaves.Containing(r);
-      if (!larger || larger->level >= fresh.level)
+      p4est_quadrant_t* larger = leaves.LargerAt(r, fresh.level);
+      if (!larger)
         continue;
       // The edge of r that touches the fresh leaf is edge ^ 3; it is an edge
       // of the larger leaf only if r sits on that side of it in both other

@@ -143,14 +143,17 @@ int RefineMarked(p4est_t*, p4est_topidx_t, p4est_quadrant_t* q)
 }
 
 /// Splits the marked leaves, then judges their children and splits again,
-/// level by level, until every leaf is judged and none is marked.
-void RefineMarkedLeaves(p4est_t* forest, ForestContext& context)
+/// level by level, until every leaf is judged and none is marked. `onLevel`
+/// hears the number of levels done (for progress).
+template <typename OnLevel>
+void RefineMarkedLeaves(p4est_t* forest, ForestContext& context, OnLevel&& onLevel)
 {
-  for (;;)
+  for (int level = 1;; ++level)
   {
     p4est_refine(forest, 0, RefineMarked, InitializeQuadrant);
     if (JudgePendingLeaves(forest, context) == 0)
       return;
+    onLevel(level);
   }
 }
 
@@ -367,13 +370,14 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
     if (!observer.Report("octree", context.ProgressAt))
       throw AbortRequested{};
   };
-  // Refine by the image criteria, then alternate balance and the neighbour
-  // rule until the forest is stable.
+  // Refine by the image criteria (the first half of the progress, level by
+  // level), then alternate balance and the neighbour rule until the forest is
+  // stable (the second half, round by round).
   if (JudgePendingLeaves(forest.get(), context) != 0)
-    RefineMarkedLeaves(forest.get(), context);
+    RefineMarkedLeaves(forest.get(), context, [&](int level) { report(0.5 * std::min(1.0, double(level) / depth)); });
   for (int round = 0;; ++round)
   {
-    report(1.0 - 1.0 / (round + 2));
+    report(1.0 - 0.5 / (round + 1));
 #ifdef P4_TO_P8
     p4est_balance(forest.get(), P8EST_CONNECT_EDGE, InitializeQuadrant);
 #else
@@ -384,7 +388,7 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
     ApplyNeighbourRuleToFresh(forest.get(), context);
     if (context.Marked == 0)
       break;
-    RefineMarkedLeaves(forest.get(), context);
+    RefineMarkedLeaves(forest.get(), context, [](int) {});
   }
   p4est_iterate(forest.get(), nullptr, nullptr, nullptr, RecordFace,
 #ifdef P4_TO_P8

@@ -135,9 +135,10 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns
   return patch;
 }
 
-std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf)
+LeafImageBoundary ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf, std::int32_t first,
+  std::int32_t second)
 {
-  std::vector<ConvexPiece> pieces;
+  LeafImageBoundary boundary;
   const int s = leaf.Size, depth = leaf.Dimension == 2 ? 1 : s;
   for (int k = 0; k < depth; ++k)
     for (int j = 0; j < s; ++j)
@@ -153,11 +154,16 @@ std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const Leaf
           {
             int n[3] = { x, y, z };
             n[axis] += step;
-            if (image.At(n[0], n[1], n[2]) != here)
-              pieces.push_back(VoxelFace(leaf.Dimension, { double(x), double(y), double(z) }, axis, step));
+            const std::int32_t there = image.At(n[0], n[1], n[2]);
+            if (there == here)
+              continue;
+            const ConvexPiece face = VoxelFace(leaf.Dimension, { double(x), double(y), double(z) }, axis, step);
+            boundary.All.push_back(face);
+            if ((here == first && there == second) || (here == second && there == first))
+              boundary.Interface.push_back(face);
           }
       }
-  return pieces;
+  return boundary;
 }
 
 bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second,
@@ -166,11 +172,11 @@ bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_
   const std::vector<ConvexPiece> patch = ConeSurfacePatch(leaf, LeafCornerSigns(image, leaf, first, second));
   if (patch.empty())
     return false;
-  const std::vector<ConvexPiece> boundary = ImageBoundaryInLeaf(image, leaf);
+  const LeafImageBoundary boundary = ImageBoundaryInLeaf(image, leaf, first, second);
   for (const ConvexPiece& piece : patch)
-    if (!WithinDistance(piece, boundary, meshToImage))
+    if (!WithinDistance(piece, boundary.Interface, meshToImage))
       return false;
-  for (const ConvexPiece& piece : boundary)
+  for (const ConvexPiece& piece : boundary.All)
     if (!WithinDistance(piece, patch, imageToMesh))
       return false;
   return true;

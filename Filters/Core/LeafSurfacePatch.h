@@ -32,9 +32,21 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns
 
 /// The image boundary in the closed leaf: voxel faces (pixel edges in 2D)
 /// between different labels inside it and on its boundary.
-std::vector<ConvexPiece> ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf);
+struct LeafImageBoundary
+{
+  std::vector<ConvexPiece> All;
+  /// Those between the leaf's two labels: the part of the image boundary that
+  /// the patch stands for.
+  std::vector<ConvexPiece> Interface;
+};
+LeafImageBoundary ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf, std::int32_t first,
+  std::int32_t second);
 
-/// h(B_L, S_L) <= imageToMesh and h(S_L, B_L) <= meshToImage.
+/// h(B_L, S_L) <= imageToMesh, with B_L every boundary face in the closed
+/// leaf, and h(S_L, I_L) <= meshToImage, with I_L only the faces between the
+/// leaf's two labels. The patch bounds both materials, so it must lie near
+/// their common interface: near a third label's boundary (on the leaf's
+/// faces) is not enough for the per-material bound.
 bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second,
   double imageToMesh, double meshToImage);
 

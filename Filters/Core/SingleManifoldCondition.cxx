@@ -3,6 +3,7 @@
 
 #include "LatticeLabels.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <numeric>
 #include <vector>
@@ -386,6 +387,89 @@ bool InteriorIsOneDisk(const LocalLabels& local, int s)
   return true;
 }
 
+/// The interface between the leaf's two labels in the closed leaf is one
+/// piece: its voxel faces (pixel edges in 2D) inside the leaf and on its
+/// boundary (a voxel of the leaf against an outside one) are connected through
+/// shared edges (shared end points in 2D). A second piece on the leaf's
+/// boundary is another part of the interface that only touches the leaf, e.g.
+/// where a third label separates them; one patch cannot stand for both, and
+/// its polygon would join them at a 0-point.
+bool InterfaceIsConnected(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second)
+{
+  const int s = leaf.Size, dimension = leaf.Dimension, depth = dimension == 2 ? 1 : s;
+  // A face is the one between voxel p and p + e_axis (leaf-relative, -1..s).
+  // Its sides (3D: the four edges; 2D: the two end points) get keys; faces
+  // with a side key in common are joined.
+  auto pack = [s](int kind, int x, int y, int z) {
+    const std::int64_t n = s + 2;
+    return ((static_cast<std::int64_t>(kind) * n + (z + 1)) * n + (y + 1)) * n + (x + 1);
+  };
+  std::vector<std::pair<std::int64_t, std::size_t>> sides;
+  std::size_t faces = 0;
+  for (int k = 0; k < depth; ++k)
+    for (int j = 0; j < s; ++j)
+      for (int i = 0; i < s; ++i)
+      {
+        const int local[3] = { i, j, k };
+        const std::int32_t here =
+          image.At(leaf.Origin[0] + i, leaf.Origin[1] + j, leaf.Origin[2] + (dimension == 2 ? 0 : k));
+        if (here != first && here != second)
+          continue;
+        const std::int32_t other = here == first ? second : first;
+        // Each face of the closed leaf once: at +1/2 from its lower voxel, and
+        // at -1/2 on the leaf's low side.
+        for (int axis = 0; axis < dimension; ++axis)
+          for (int step = local[axis] == 0 ? -1 : 1; step <= 1; step += 2)
+          {
+            int n[3] = { i, j, k };
+            n[axis] += step;
+            if (image.At(leaf.Origin[0] + n[0], leaf.Origin[1] + n[1], leaf.Origin[2] + (dimension == 2 ? 0 : n[2])) !=
+              other)
+              continue;
+            // The face's plane: lattice coordinate p[axis] (the +1/2 side of the
+            // lower voxel); its sides run along the other axes.
+            int p[3] = { i, j, k };
+            p[axis] = std::max(local[axis], n[axis]);
+            const std::size_t face = faces++;
+            if (dimension == 2)
+            {
+              const int along = 1 - axis;
+              for (int end = 0; end < 2; ++end)
+              {
+                int q[3] = { p[0], p[1], 0 };
+                q[along] += end;
+                sides.emplace_back(pack(0, q[0], q[1], 0), face);
+              }
+              continue;
+            }
+            for (int a = 0; a < 3; ++a)
+            {
+              if (a == axis)
+                continue;
+              const int b = 3 - axis - a; // the edge runs along a, at both ends across b
+              for (int end = 0; end < 2; ++end)
+              {
+                int q[3] = { p[0], p[1], p[2] };
+                q[b] += end;
+                sides.emplace_back(pack(a, q[0], q[1], q[2]), face);
+              }
+            }
+          }
+      }
+  if (faces == 0)
+    return false;
+  std::sort(sides.begin(), sides.end());
+  UnionFind uf(faces);
+  for (std::size_t t = 1; t < sides.size(); ++t)
+    if (sides[t].first == sides[t - 1].first)
+      uf.Unite(sides[t].second, sides[t - 1].second);
+  const std::size_t root = uf.Find(0);
+  for (std::size_t f = 1; f < faces; ++f)
+    if (uf.Find(f) != root)
+      return false;
+  return true;
+}
+
 } // namespace
 
 bool SatisfiesSingleManifoldCondition(
@@ -394,6 +478,8 @@ bool SatisfiesSingleManifoldCondition(
   if (first == second || leaf.Size < 2)
     return false;
   if (!EdgesAndFacesAreSimple(BoundarySigns(image, leaf, first, second), leaf))
+    return false;
+  if (!InterfaceIsConnected(image, leaf, first, second))
     return false;
   const LocalLabels local(image, leaf, second);
   return leaf.Dimension == 2 ? InteriorIsOnePath(local, leaf.Size) : InteriorIsOneDisk(local, leaf.Size);

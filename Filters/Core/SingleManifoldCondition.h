@@ -23,6 +23,9 @@
  *    segments that lie in the image boundary themselves: neighbouring
  *    0-points can belong to separate pieces of the boundary (one of them
  *    touching the leaf from outside), and then the leaf holds two pieces;
+ *  - the interface between the leaf's two labels in the closed leaf (inside
+ *    it and on its faces) is one connected piece: a piece on a face, cut off
+ *    from the rest by a third label, would be joined to it by the patch;
  *  - inside the leaf, the voxel faces between the two labels form one
  *    topological disk: a 2-manifold with boundary (both labels face-connected
  *    around every voxel vertex, which excludes pinched edges and vertices),

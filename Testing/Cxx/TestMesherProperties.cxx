@@ -18,7 +18,7 @@
 // A failure prints the seed and what its image contains.
 
 #include "LabelOctreeMesher.h"
-#include "MeshChecks.h"
+#include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
 
 #include <gtest/gtest.h>
@@ -30,8 +30,6 @@ namespace labelmesher
 namespace
 {
 
-constexpr double kProvenDihedralBound = 30.0; // TestAngleBoundEnumeration
-constexpr double kProvenPlanarBound = 45.0;
 constexpr int kImagesPerShard = 50;
 
 struct Shard
@@ -49,39 +47,14 @@ std::string Explain(const testing::RandomLabelImage& random, const MesherParamet
   return s.str();
 }
 
-void CheckGuarantees(const testing::RandomLabelImage& random, int dimension)
+void CheckGuarantees(const testing::RandomLabelImage& random)
 {
-  const std::uint64_t seed = random.Seed;
-  testing::SeededRandom draw(seed ^ 0x9e3779b97f4a7c15ull);
-  MesherParameters parameters;
-  parameters.ImageToMeshDistance = static_cast<double>(draw.Int(0, 3));
-  parameters.MeshToImageDistance = static_cast<double>(draw.Int(0, 3));
-  const std::string context = Explain(random, parameters);
-
-  MesherResult result;
-  ASSERT_NO_THROW(result = MeshLabelImage(random.Image, parameters)) << context;
-  const SimplexMesh& mesh = result.Mesh;
-  ASSERT_GT(mesh.NumberOfCells(), 0u) << context;
-
-  const QualityReport quality = MeasureQuality(mesh);
-  EXPECT_GE(quality.MinimumAngle, (dimension == 3 ? kProvenDihedralBound : kProvenPlanarBound) - 1e-9) << context;
-  EXPECT_EQ(quality.InvertedCells, 0u) << context;
-
-  const ConformityReport conformity = MeasureConformity(mesh);
-  EXPECT_TRUE(conformity.Conforming()) << "over-shared " << conformity.OverSharedFaces << ", hanging "
-                                       << conformity.HangingVertices << ", non-manifold boundary "
-                                       << conformity.NonManifoldBoundaryEdges << "\n"
-                                       << context;
-
-  EXPECT_TRUE(WithinHausdorff(random.Image, mesh, parameters.ImageToMeshDistance, parameters.MeshToImageDistance))
-    << context;
-
-  for (const auto& [label, topology] : CompareTopology(random.Image, mesh))
-    EXPECT_TRUE(topology.Matches()) << "material " << label << ": image " << topology.Image.Components
-                                    << " components, chi " << topology.Image.EulerCharacteristic << "; mesh "
-                                    << topology.Mesh.Components << " components, chi "
-                                    << topology.Mesh.EulerCharacteristic << "\n"
-                                    << context;
+  const MesherParameters parameters = testing::DrawDistanceBounds(random.Seed);
+  const std::vector<std::string> problems = testing::ViolatedMesherGuarantees(random.Image, parameters);
+  std::string listed;
+  for (const std::string& problem : problems)
+    listed += "  " + problem + "\n";
+  EXPECT_TRUE(problems.empty()) << listed << Explain(random, parameters);
 }
 
 class MesherProperties : public ::testing::TestWithParam<Shard>
@@ -94,7 +67,7 @@ TEST_P(MesherProperties, AngleConformityHausdorffAndTopologyHold)
   for (int i = 0; i < kImagesPerShard; ++i)
   {
     const std::uint64_t seed = 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * kImagesPerShard + i;
-    CheckGuarantees(testing::GenerateRandomLabelImageWithDescription(seed, shard.Dimension), shard.Dimension);
+    CheckGuarantees(testing::GenerateRandomLabelImageWithDescription(seed, shard.Dimension));
     if (HasFailure())
       return; // one failing seed is enough to report
   }
@@ -121,7 +94,7 @@ TEST(MesherPropertiesRegression, SeedsThatOnceFailed)
     const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(c.Seed, c.Dimension);
     ASSERT_EQ(testing::LabelImageChecksum(random.Image), c.Checksum) << "seed " << c.Seed << " names another image now";
     SCOPED_TRACE(c.What);
-    CheckGuarantees(random, c.Dimension);
+    CheckGuarantees(random);
   }
 }
 
@@ -137,8 +110,7 @@ TEST_P(BoxImageProperties, AngleConformityHausdorffAndTopologyHold)
   for (int i = 0; i < images; ++i)
   {
     const std::uint64_t seed = 100000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images + i;
-    CheckGuarantees(testing::GenerateRandomBoxImage(seed, shard.Dimension, shard.Dimension == 3 ? 14 : 24),
-      shard.Dimension);
+    CheckGuarantees(testing::GenerateRandomBoxImage(seed, shard.Dimension, shard.Dimension == 3 ? 14 : 24));
     if (HasFailure())
       return;
   }

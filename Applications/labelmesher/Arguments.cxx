@@ -11,19 +11,28 @@ namespace labelmesher_cli
 namespace
 {
 
-double ParseDistance(const std::string& option, const std::string& text)
+/// `text` read whole by `read` (std::stod or std::stol); false when it is empty,
+/// not a number, or has anything after the number.
+template <typename Value, typename Read>
+bool ReadWhole(const std::string& text, Read read, Value& value)
 {
   std::size_t used = 0;
-  double value = 0.0;
   try
   {
-    value = std::stod(text, &used);
+    value = static_cast<Value>(read(text, &used));
   }
   catch (const std::exception&)
   {
-    used = 0;
+    return false;
   }
-  if (used != text.size() || text.empty() || !std::isfinite(value) || value < 0.0)
+  return !text.empty() && used == text.size();
+}
+
+double ParseDistance(const std::string& option, const std::string& text)
+{
+  double value = 0.0;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
+  if (!ReadWhole(text, read, value) || !std::isfinite(value) || value < 0.0)
   {
     throw UsageError(option + " expects a non-negative number of voxels, got '" + text + "'");
   }
@@ -32,17 +41,9 @@ double ParseDistance(const std::string& option, const std::string& text)
 
 int ParseCount(const std::string& option, const std::string& text, int minimum)
 {
-  std::size_t used = 0;
   long value = 0;
-  try
-  {
-    value = std::stol(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used != text.size() || text.empty() || value < minimum || value > 1000000)
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stol(t, used); };
+  if (!ReadWhole(text, read, value) || value < minimum || value > 1000000)
   {
     throw UsageError(option + " expects a whole number >= " + std::to_string(minimum) +
       ", got '" + text + "'");
@@ -52,17 +53,9 @@ int ParseCount(const std::string& option, const std::string& text, int minimum)
 
 double ParseTension(const std::string& text)
 {
-  std::size_t used = 0;
   double value = -1.0;
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used != text.size() || text.empty() || !(value >= 0.0 && value <= 1.0))
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
+  if (!ReadWhole(text, read, value) || !(value >= 0.0 && value <= 1.0))
   {
     throw UsageError("--tension expects a number in [0, 1], got '" + text + "'");
   }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "LeafSurfacePatch.h"
 
+#include "LeafFaces.h"
+
 #include <numeric>
 
 namespace labelmesher
@@ -139,30 +141,15 @@ LeafImageBoundary ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& le
   std::int32_t second)
 {
   LeafImageBoundary boundary;
-  const int s = leaf.Size, depth = leaf.Dimension == 2 ? 1 : s;
-  for (int k = 0; k < depth; ++k)
-    for (int j = 0; j < s; ++j)
-      for (int i = 0; i < s; ++i)
-      {
-        const int local[3] = { i, j, k };
-        const int x = leaf.Origin[0] + i, y = leaf.Origin[1] + j, z = leaf.Origin[2] + k;
-        const std::int32_t here = image.At(x, y, z);
-        for (int axis = 0; axis < leaf.Dimension; ++axis)
-          // The face at +1/2 along `axis`, and at -1/2 on the leaf's low side:
-          // each face of the closed leaf once.
-          for (int step = local[axis] == 0 ? -1 : 1; step <= 1; step += 2)
-          {
-            int n[3] = { x, y, z };
-            n[axis] += step;
-            const std::int32_t there = image.At(n[0], n[1], n[2]);
-            if (there == here)
-              continue;
-            const ConvexPiece face = VoxelFace(leaf.Dimension, { double(x), double(y), double(z) }, axis, step);
-            boundary.All.push_back(face);
-            if ((here == first && there == second) || (here == second && there == first))
-              boundary.Interface.push_back(face);
-          }
-      }
+  ForEachBoundaryFaceInLeaf(image, leaf,
+    [&](const std::array<int, 3>& voxel, int axis, int step, std::int32_t here, std::int32_t there) {
+      const Point3 centre{ double(leaf.Origin[0] + voxel[0]), double(leaf.Origin[1] + voxel[1]),
+        double(leaf.Origin[2] + voxel[2]) };
+      const ConvexPiece face = VoxelFace(leaf.Dimension, centre, axis, step);
+      boundary.All.push_back(face);
+      if ((here == first && there == second) || (here == second && there == first))
+        boundary.Interface.push_back(face);
+    });
   return boundary;
 }
 

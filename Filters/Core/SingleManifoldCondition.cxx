@@ -2,6 +2,7 @@
 #include "SingleManifoldCondition.h"
 
 #include "LatticeLabels.h"
+#include "LeafFaces.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -396,66 +397,49 @@ bool InteriorIsOneDisk(const LocalLabels& local, int s)
 /// its polygon would join them at a 0-point.
 bool InterfaceIsConnected(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second)
 {
-  const int s = leaf.Size, dimension = leaf.Dimension, depth = dimension == 2 ? 1 : s;
-  // A face is the one between voxel p and p + e_axis (leaf-relative, -1..s).
-  // Its sides (3D: the four edges; 2D: the two end points) get keys; faces
-  // with a side key in common are joined.
+  const int s = leaf.Size, dimension = leaf.Dimension;
+  // Faces are numbered as they come; their sides (3D: the four edges; 2D: the
+  // two end points) are keyed by lattice position (leaf-relative, -1..s), and
+  // faces with a side key in common are joined.
   auto pack = [s](int kind, int x, int y, int z) {
     const std::int64_t n = s + 2;
     return ((static_cast<std::int64_t>(kind) * n + (z + 1)) * n + (y + 1)) * n + (x + 1);
   };
   std::vector<std::pair<std::int64_t, std::size_t>> sides;
   std::size_t faces = 0;
-  for (int k = 0; k < depth; ++k)
-    for (int j = 0; j < s; ++j)
-      for (int i = 0; i < s; ++i)
+  ForEachBoundaryFaceInLeaf(image, leaf,
+    [&](const std::array<int, 3>& voxel, int axis, int step, std::int32_t here, std::int32_t there) {
+      if (!((here == first && there == second) || (here == second && there == first)))
+        return;
+      // The face's plane is at lattice coordinate voxel[axis] + 1 (step +1) or
+      // voxel[axis] (step -1); its sides run along the other axes.
+      std::array<int, 3> p = voxel;
+      p[axis] += step > 0 ? 1 : 0;
+      const std::size_t face = faces++;
+      if (dimension == 2)
       {
-        const int local[3] = { i, j, k };
-        const std::int32_t here =
-          image.At(leaf.Origin[0] + i, leaf.Origin[1] + j, leaf.Origin[2] + (dimension == 2 ? 0 : k));
-        if (here != first && here != second)
-          continue;
-        const std::int32_t other = here == first ? second : first;
-        // Each face of the closed leaf once: at +1/2 from its lower voxel, and
-        // at -1/2 on the leaf's low side.
-        for (int axis = 0; axis < dimension; ++axis)
-          for (int step = local[axis] == 0 ? -1 : 1; step <= 1; step += 2)
-          {
-            int n[3] = { i, j, k };
-            n[axis] += step;
-            if (image.At(leaf.Origin[0] + n[0], leaf.Origin[1] + n[1], leaf.Origin[2] + (dimension == 2 ? 0 : n[2])) !=
-              other)
-              continue;
-            // The face's plane: lattice coordinate p[axis] (the +1/2 side of the
-            // lower voxel); its sides run along the other axes.
-            int p[3] = { i, j, k };
-            p[axis] = std::max(local[axis], n[axis]);
-            const std::size_t face = faces++;
-            if (dimension == 2)
-            {
-              const int along = 1 - axis;
-              for (int end = 0; end < 2; ++end)
-              {
-                int q[3] = { p[0], p[1], 0 };
-                q[along] += end;
-                sides.emplace_back(pack(0, q[0], q[1], 0), face);
-              }
-              continue;
-            }
-            for (int a = 0; a < 3; ++a)
-            {
-              if (a == axis)
-                continue;
-              const int b = 3 - axis - a; // the edge runs along a, at both ends across b
-              for (int end = 0; end < 2; ++end)
-              {
-                int q[3] = { p[0], p[1], p[2] };
-                q[b] += end;
-                sides.emplace_back(pack(a, q[0], q[1], q[2]), face);
-              }
-            }
-          }
+        const int along = 1 - axis;
+        for (int end = 0; end < 2; ++end)
+        {
+          std::array<int, 3> q = p;
+          q[along] += end;
+          sides.emplace_back(pack(0, q[0], q[1], 0), face);
+        }
+        return;
       }
+      for (int a = 0; a < 3; ++a)
+      {
+        if (a == axis)
+          continue;
+        const int b = 3 - axis - a; // the edge runs along a, at both ends across b
+        for (int end = 0; end < 2; ++end)
+        {
+          std::array<int, 3> q = p;
+          q[b] += end;
+          sides.emplace_back(pack(a, q[0], q[1], q[2]), face);
+        }
+      }
+    });
   if (faces == 0)
     return false;
   std::sort(sides.begin(), sides.end());

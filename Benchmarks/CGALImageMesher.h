@@ -21,8 +21,8 @@
  * n - 0.5, like ours.
  */
 
-#include "LabelImage.h"
-#include "SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <string>
 #include <utility>

@@ -21,7 +21,7 @@
 //           hIM_ours hIM_cgal hMI_ours hMI_cgal topo_ours topo_cgal
 #include "CGALImageMesher.h"
 #include "LabelOctreeMesher.h"
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "SyntheticShapes.h"
 #ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 #include "LabelImageFile.h"

@@ -4,10 +4,10 @@
 // element count), the shared 2D label images, and a batch of random 2D images.
 // The peer figure is our own linear mesher on the same image in the same run:
 // `curve/mesh` is the curving time over the linear meshing time. See README.md.
-#include "BezierCurver.h"
+#include "Curving/BezierCurver.h"
 #include "BenchmarkSupport.h"
 #include "LabelOctreeMesher.h"
-#include "MeshSelection.h"
+#include "Mesh/MeshSelection.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
 #ifdef LABELMESHER_BENCHMARKS_HAVE_ITK

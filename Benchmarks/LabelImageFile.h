@@ -11,7 +11,7 @@
  * core on purpose (the core has no I/O and no ITK).
  */
 
-#include "LabelImage.h"
+#include "Support/LabelImage.h"
 
 #include <array>
 #include <string>

@@ -14,8 +14,8 @@
  * space hold in physical space.
  */
 
-#include "LabelImage.h"
-#include "SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <string>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "vtkBezierCurver.h"
 
-#include "BezierCurver.h"
-#include "CurvedMeshLocator.h"
+#include "Curving/BezierCurver.h"
+#include "Curving/CurvedMeshLocator.h"
 #include "LabelImageConversion.h"
 
 #include "vtkCellArray.h"

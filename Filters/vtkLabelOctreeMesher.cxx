@@ -3,10 +3,8 @@
 
 #include "LabelImageConversion.h"
 #include "LabelOctreeMesher.h"
-#include "MeshSelection.h"
-#ifdef LABELMESHER_HAVE_CHECKS
-#include "MeshChecks.h"
-#endif
+#include "Mesh/MeshSelection.h"
+#include "Checks/MeshChecks.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -90,7 +88,6 @@ void AddScalarField(vtkFieldData* fd, const char* name, double value)
   AddField<vtkDoubleArray>(fd, name, std::vector<double>{ value });
 }
 
-#ifdef LABELMESHER_HAVE_CHECKS
 /// `finished(check)` is called after each check (for its time and progress).
 template <typename Finished>
 void AddMeasures(vtkFieldData* fd, const labelmesher::LabelImage& image,
@@ -131,7 +128,6 @@ void AddMeasures(vtkFieldData* fd, const labelmesher::LabelImage& image,
   AddField<vtkIntArray>(fd, "TopologyMatches", matches);
   finished("topology");
 }
-#endif
 
 } // anonymous namespace
 
@@ -198,11 +194,7 @@ int vtkLabelOctreeMesher::RequestData(
   labelmesher::MesherParameters parameters;
   parameters.ImageToMeshDistance = this->ImageToMeshDistance;
   parameters.MeshToImageDistance = this->MeshToImageDistance;
-#ifdef LABELMESHER_HAVE_CHECKS
   const bool measure = this->MeasureOutput;
-#else
-  const bool measure = false;
-#endif
   const double meshShare = measure ? 0.8 : 1.0;
   labelmesher::ProgressObserver observer;
   observer.Callback = [this, meshShare](const std::string& stage, double fraction) {
@@ -306,7 +298,6 @@ int vtkLabelOctreeMesher::RequestData(
     stageSeconds.push_back(timing.Seconds);
   }
 
-#ifdef LABELMESHER_HAVE_CHECKS
   if (measure)
   {
     this->SetProgressText("measure");
@@ -330,7 +321,6 @@ int vtkLabelOctreeMesher::RequestData(
       vtkWarningMacro("Measuring the mesh failed: " << e.what());
     }
   }
-#endif
   AddField<vtkStringArray>(fd, "StageName", stageNames);
   AddField<vtkDoubleArray>(fd, "StageSeconds", stageSeconds);
   this->SetProgressText(nullptr);

@@ -17,13 +17,13 @@
 
 #include "LabelOctreeMesher.h"
 
-#include "LabelPyramid.h"
-#include "LatticeLabels.h"
-#include "LeafFill.h"
-#include "LeafSurfacePatch.h"
-#include "MeshBoundary.h"
-#include "OctreeRefinement.h"
-#include "SingleManifoldCondition.h"
+#include "Octree/LabelPyramid.h"
+#include "Octree/LatticeLabels.h"
+#include "Fill/LeafFill.h"
+#include "Fill/LeafSurfacePatch.h"
+#include "Mesh/MeshBoundary.h"
+#include "Octree/OctreeRefinement.h"
+#include "Criteria/SingleManifoldCondition.h"
 
 #include <chrono>
 #include <stdexcept>

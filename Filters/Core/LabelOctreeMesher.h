@@ -9,9 +9,9 @@
  * triangle (2D) or tetrahedral (3D) mesh out.
  */
 
-#include "LabelImage.h"
-#include "ProgressObserver.h"
-#include "SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Support/ProgressObserver.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <string>
 #include <utility>

@@ -19,9 +19,9 @@
 // Each is run through the production code, and its triangles are also checked
 // to tile the face and respect the intersection edge.
 
-#include "FaceTriangulation.h"
-#include "Geometry.h"
-#include "LatticeLabels.h"
+#include "Fill/FaceTriangulation.h"
+#include "Support/Geometry.h"
+#include "Octree/LatticeLabels.h"
 
 #include <gtest/gtest.h>
 

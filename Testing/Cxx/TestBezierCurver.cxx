@@ -11,8 +11,8 @@
 // meshes that are already close to the image). It is asserted to improve on
 // coarse meshes of the same shapes, like those a decimator produces.
 
-#include "BezierCurver.h"
-#include "CurvedMeshLocator.h"
+#include "Curving/BezierCurver.h"
+#include "Curving/CurvedMeshLocator.h"
 #include "CurvingChecks.h"
 #include "LabelOctreeMesher.h"
 #include "SyntheticShapes.h"

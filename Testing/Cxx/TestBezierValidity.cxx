@@ -3,8 +3,8 @@
 // point order, Table 1 against the cubic's derivatives and finite differences,
 // Algorithm 5 on quartics with known minima, and the control-net test and the
 // subdivision bounds against dense sampling of det J on random control nets.
-#include "CubicTriangle.h"
-#include "JacobianBound.h"
+#include "Curving/CubicTriangle.h"
+#include "Curving/JacobianBound.h"
 
 #include <gtest/gtest.h>
 

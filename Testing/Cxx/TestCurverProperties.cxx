@@ -11,7 +11,7 @@
 //     linear mesh's boundary vertices.
 // A failure prints the seed and what its image contains.
 
-#include "BezierCurver.h"
+#include "Curving/BezierCurver.h"
 #include "CurvingChecks.h"
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"

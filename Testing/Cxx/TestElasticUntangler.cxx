@@ -6,9 +6,9 @@
 // one-step method leaves tangled and the iterative method untangles; an
 // annulus with both circles curved; bends no load schedule can untangle;
 // progress, abort, degenerate control triangles and bad input.
-#include "CurvedMesh.h"
-#include "ElasticUntangler.h"
-#include "JacobianBound.h"
+#include "Curving/CurvedMesh.h"
+#include "Curving/ElasticUntangler.h"
+#include "Curving/JacobianBound.h"
 
 #include <gtest/gtest.h>
 

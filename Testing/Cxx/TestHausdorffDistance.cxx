@@ -4,7 +4,7 @@
 // values computed by hand (voxel-exact meshes: 0; translated: the shift;
 // a cut voxel: corner distances) and for rigour (just above passes, just below
 // fails).
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>

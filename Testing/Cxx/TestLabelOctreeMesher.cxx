@@ -5,8 +5,8 @@
 // images whose answer is known exactly.
 
 #include "LabelOctreeMesher.h"
-#include "Geometry.h"
-#include "MeshChecks.h"
+#include "Support/Geometry.h"
+#include "Checks/MeshChecks.h"
 
 #include <gtest/gtest.h>
 

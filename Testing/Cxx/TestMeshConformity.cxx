@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // MeasureConformity: over-shared facets, hanging vertices (on edges and inside
 // faces, not relying on a lattice) and boundary watertightness.
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>

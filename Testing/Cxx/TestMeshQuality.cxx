@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // MeasureQuality: dihedral angles (3D), planar angles (2D) and inverted cells,
 // checked against values computed analytically.
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // every label and of the closed cells of every material, checked on shapes
 // whose topology is known (torus, hollow sphere, annulus, edge contact) and on
 // voxel-exact meshes of random images, which must match their image.
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "VoxelMeshes.h"
 
 #include <gtest/gtest.h>

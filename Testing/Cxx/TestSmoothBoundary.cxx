@@ -4,8 +4,8 @@
 // end conditions and closeness to a circle. ExtractInterfaceChains on meshes of
 // small label grids (two triangles per pixel), checked against a brute-force
 // classification of every mesh edge.
-#include "InterfaceChains.h"
-#include "SmoothBoundary.h"
+#include "Curving/InterfaceChains.h"
+#include "Curving/SmoothBoundary.h"
 
 #include <gtest/gtest.h>
 

@@ -34,10 +34,10 @@
  * Elements are processed by a few threads.
  */
 
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 
-#include "Geometry.h"
-#include "MeshIncidence.h"
+#include "Support/Geometry.h"
+#include "Checks/MeshIncidence.h"
 
 #include <algorithm>
 #include <atomic>

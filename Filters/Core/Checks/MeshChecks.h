@@ -16,8 +16,8 @@
  * Overall boundaries are the unions over all non-zero materials.
  */
 
-#include "LabelImage.h"
-#include "SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <cstdint>
 #include <map>

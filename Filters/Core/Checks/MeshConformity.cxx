@@ -19,10 +19,10 @@
  *     facets and count those not used by exactly two boundary facets.
  */
 
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 
-#include "Geometry.h"
-#include "MeshIncidence.h"
+#include "Support/Geometry.h"
+#include "Checks/MeshIncidence.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "MeshIncidence.h"
+#include "Checks/MeshIncidence.h"
 
 #include <stdexcept>
 

@@ -17,8 +17,8 @@
  * different ids are different vertices).
  */
 
-#include "ParallelChunks.h"
-#include "SimplexMesh.h"
+#include "Support/ParallelChunks.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <algorithm>
 #include <array>

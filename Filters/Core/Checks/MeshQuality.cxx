@@ -12,10 +12,10 @@
  * A degenerate cell (zero-length edge or collinear points) gets the angle 0.
  */
 
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 
-#include "Geometry.h"
-#include "MeshIncidence.h"
+#include "Support/Geometry.h"
+#include "Checks/MeshIncidence.h"
 
 #include <cmath>
 #include <limits>

@@ -23,9 +23,9 @@
  *    share a vertex.
  */
 
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 
-#include "MeshIncidence.h"
+#include "Checks/MeshIncidence.h"
 
 #include <algorithm>
 #include <numeric>

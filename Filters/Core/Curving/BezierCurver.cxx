@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "BezierCurver.h"
+#include "Curving/BezierCurver.h"
 
 #include <algorithm>
 #include <chrono>

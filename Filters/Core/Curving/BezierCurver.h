@@ -13,14 +13,14 @@
  * with two edges on one smooth chain are split first (BoundaryEars.h).
  */
 
-#include "BoundaryEars.h"
-#include "CurvedMesh.h"
-#include "ElasticUntangler.h"
-#include "InterfaceChains.h"
-#include "JacobianBound.h"
-#include "ProgressObserver.h"
-#include "SimplexMesh.h"
-#include "SmoothBoundary.h"
+#include "Curving/BoundaryEars.h"
+#include "Curving/CurvedMesh.h"
+#include "Curving/ElasticUntangler.h"
+#include "Curving/InterfaceChains.h"
+#include "Curving/JacobianBound.h"
+#include "Support/ProgressObserver.h"
+#include "Mesh/SimplexMesh.h"
+#include "Curving/SmoothBoundary.h"
 
 #include <cstddef>
 #include <string>

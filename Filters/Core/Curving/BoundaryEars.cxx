@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "BoundaryEars.h"
+#include "Curving/BoundaryEars.h"
 
 #include <algorithm>
 #include <unordered_map>

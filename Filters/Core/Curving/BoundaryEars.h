@@ -14,8 +14,8 @@
  * multi-material label meshes (one-pixel lines, speckle) do.
  */
 
-#include "InterfaceChains.h"
-#include "SimplexMesh.h"
+#include "Curving/InterfaceChains.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <cstddef>
 #include <vector>

@@ -5,7 +5,7 @@
  * section 2.5): T(u, v, w) = sum over i + j + k = 3 of 3!/(i! j! k!) u^i v^j w^k P_ijk.
  */
 
-#include "CubicTriangle.h"
+#include "Curving/CubicTriangle.h"
 
 #include <stdexcept>
 

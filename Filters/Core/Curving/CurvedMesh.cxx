@@ -8,7 +8,7 @@
  * edge in order of first use, then one interior point per cell.
  */
 
-#include "CurvedMesh.h"
+#include "Curving/CurvedMesh.h"
 
 #include <algorithm>
 #include <stdexcept>

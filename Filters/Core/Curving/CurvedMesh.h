@@ -10,8 +10,8 @@
  * in VTK_BEZIER_TRIANGLE order (see CubicTriangle.h).
  */
 
-#include "CubicTriangle.h"
-#include "SimplexMesh.h"
+#include "Curving/CubicTriangle.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <array>
 #include <cstdint>

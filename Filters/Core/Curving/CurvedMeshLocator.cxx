@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "CurvedMeshLocator.h"
+#include "Curving/CurvedMeshLocator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -14,8 +14,8 @@
  * well posed on valid cells (det J > 0).
  */
 
-#include "CurvedMesh.h"
-#include "LabelImage.h"
+#include "Curving/CurvedMesh.h"
+#include "Support/LabelImage.h"
 
 #include <array>
 #include <cstddef>

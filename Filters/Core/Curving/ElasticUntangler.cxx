@@ -38,9 +38,9 @@
  * (very long thin cells), with the symbolic analysis done once.
  */
 
-#include "ElasticUntangler.h"
+#include "Curving/ElasticUntangler.h"
 
-#include "JacobianBound.h"
+#include "Curving/JacobianBound.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>

@@ -18,8 +18,8 @@
  * MaximumSteps fractions.
  */
 
-#include "CurvedMesh.h"
-#include "ProgressObserver.h"
+#include "Curving/CurvedMesh.h"
+#include "Support/ProgressObserver.h"
 
 #include <cstdint>
 #include <utility>

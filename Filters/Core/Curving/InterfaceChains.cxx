@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "InterfaceChains.h"
+#include "Curving/InterfaceChains.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
  * their vertices end chains. Chains without an end are closed loops.
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <array>
 #include <cstdint>

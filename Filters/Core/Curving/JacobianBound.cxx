@@ -16,7 +16,7 @@
  * with all nine control triangles positive and det J < 0 somewhere).
  */
 
-#include "JacobianBound.h"
+#include "Curving/JacobianBound.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
  * twisted against each other.
  */
 
-#include "CubicTriangle.h"
+#include "Curving/CubicTriangle.h"
 
 #include <array>
 

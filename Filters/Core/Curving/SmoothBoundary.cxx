@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "SmoothBoundary.h"
+#include "Curving/SmoothBoundary.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>

@@ -19,7 +19,7 @@
  * vertices) stay straight, with control points at 1/3 and 2/3.
  */
 
-#include "CubicTriangle.h"
+#include "Curving/CubicTriangle.h"
 
 #include <array>
 #include <vector>

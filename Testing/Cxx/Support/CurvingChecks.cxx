@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "CurvingChecks.h"
 
-#include "MeshSelection.h"
+#include "Mesh/MeshSelection.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
  * interfaces measured at every joint on the output control points.
  */
 
-#include "BezierCurver.h"
+#include "Curving/BezierCurver.h"
 #include "LabelOctreeMesher.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MesherGuarantees.h"
 
-#include "MeshChecks.h"
+#include "Checks/MeshChecks.h"
 #include "RandomLabelImages.h"
 
 #include <exception>

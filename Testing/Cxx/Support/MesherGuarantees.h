@@ -13,7 +13,7 @@
  * (labelmesher_property_scan), so both assert exactly the same.
  */
 
-#include "LabelImage.h"
+#include "Support/LabelImage.h"
 #include "LabelOctreeMesher.h"
 
 #include <cstdint>

@@ -27,7 +27,7 @@
  * 2D image has Dimensions[2] == 1.
  */
 
-#include "LabelImage.h"
+#include "Support/LabelImage.h"
 
 #include <cstdint>
 #include <random>

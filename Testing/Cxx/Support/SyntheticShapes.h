@@ -10,7 +10,7 @@
  * (nz-1)/2) unless stated otherwise. All radii are in voxels.
  */
 
-#include "LabelImage.h"
+#include "Support/LabelImage.h"
 
 #include <cstdint>
 #include <vector>

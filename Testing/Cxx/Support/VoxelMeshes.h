@@ -9,8 +9,8 @@
  * is the image boundary exactly, and random voxel-noise label images.
  */
 
-#include "LabelImage.h"
-#include "SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <random>
 

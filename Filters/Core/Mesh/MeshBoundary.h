@@ -13,7 +13,7 @@
  * proportional to the boundary rather than to the volume.
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <utility>
 #include <vector>

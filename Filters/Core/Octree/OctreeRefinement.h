@@ -20,8 +20,8 @@
  * split.
  */
 
-#include "LeafBox.h"
-#include "ProgressObserver.h"
+#include "Octree/LeafBox.h"
+#include "Support/ProgressObserver.h"
 
 #include <functional>
 #include <vector>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "SingleManifoldCondition.h"
+#include "Criteria/SingleManifoldCondition.h"
 
-#include "LatticeLabels.h"
-#include "LeafFaces.h"
+#include "Octree/LatticeLabels.h"
+#include "Octree/LeafFaces.h"
 
 #include <algorithm>
 #include <cstdlib>

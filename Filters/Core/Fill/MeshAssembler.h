@@ -11,7 +11,7 @@
  * positively here, from exact integer determinants.
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <array>
 #include <cstdint>

@@ -34,8 +34,8 @@
  * A leaf that fails is split; single voxels are uniform, so refinement ends.
  */
 
-#include "LabelImage.h"
-#include "LeafBox.h"
+#include "Support/LabelImage.h"
+#include "Octree/LeafBox.h"
 
 namespace labelmesher
 {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "MeshSelection.h"
+#include "Mesh/MeshSelection.h"
 
 namespace labelmesher
 {

@@ -15,8 +15,8 @@
  * -1 for Second, 0 on the boundary.
  */
 
-#include "LabelImage.h"
-#include "LeafBox.h"
+#include "Support/LabelImage.h"
+#include "Octree/LeafBox.h"
 
 #include <array>
 #include <cstdint>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "FaceTriangulation.h"
+#include "Fill/FaceTriangulation.h"
 
-#include "Geometry.h"
-#include "LatticeLabels.h"
+#include "Support/Geometry.h"
+#include "Octree/LatticeLabels.h"
 
 #include <stdexcept>
 

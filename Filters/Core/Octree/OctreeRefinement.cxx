@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "OctreeRefinement.h"
+#include "Octree/OctreeRefinement.h"
 
 #include <mpi.h>
 #include <p4est_base.h>

@@ -11,8 +11,8 @@
  * the leaf's two labels form one piece; both walk them here.
  */
 
-#include "LabelImage.h"
-#include "LeafBox.h"
+#include "Support/LabelImage.h"
+#include "Octree/LeafBox.h"
 
 #include <array>
 #include <cstdint>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "LeafFill.h"
+#include "Fill/LeafFill.h"
 
-#include "FaceTriangulation.h"
-#include "LatticeLabels.h"
+#include "Fill/FaceTriangulation.h"
+#include "Octree/LatticeLabels.h"
 
 #include <stdexcept>
 

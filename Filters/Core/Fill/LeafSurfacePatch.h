@@ -14,10 +14,10 @@
  * Coordinates are index-space (voxel centres at integers).
  */
 
-#include "DistanceBound.h"
-#include "LabelImage.h"
-#include "LatticeLabels.h"
-#include "LeafBox.h"
+#include "Criteria/DistanceBound.h"
+#include "Support/LabelImage.h"
+#include "Octree/LatticeLabels.h"
+#include "Octree/LeafBox.h"
 
 #include <vector>
 

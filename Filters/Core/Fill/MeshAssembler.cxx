@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "MeshAssembler.h"
+#include "Fill/MeshAssembler.h"
 
 #include <stdexcept>
 #include <utility>

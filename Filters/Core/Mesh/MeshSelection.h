@@ -8,7 +8,7 @@
  * they use renumbered in order of first use (unused points dropped).
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 namespace labelmesher
 {

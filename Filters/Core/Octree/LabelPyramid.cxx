@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "LabelPyramid.h"
+#include "Octree/LabelPyramid.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "LeafSurfacePatch.h"
+#include "Fill/LeafSurfacePatch.h"
 
-#include "LeafFaces.h"
+#include "Octree/LeafFaces.h"
 
 #include <numeric>
 

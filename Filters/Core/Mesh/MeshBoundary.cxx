@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "MeshBoundary.h"
+#include "Mesh/MeshBoundary.h"
 
-#include "ParallelChunks.h"
+#include "Support/ParallelChunks.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "DistanceBound.h"
+#include "Criteria/DistanceBound.h"
 
-#include "Geometry.h"
+#include "Support/Geometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 // every p4est_ name to its p8est_ twin (p4est's own idiom for sharing code).
 // Not a public header: included by exactly those two files.
 
-#include "OctreeRefinement.h"
-#include "ParallelChunks.h"
+#include "Octree/OctreeRefinement.h"
+#include "Support/ParallelChunks.h"
 
 #include <algorithm>
 #include <array>

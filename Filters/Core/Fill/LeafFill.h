@@ -16,9 +16,9 @@
  *   side of the surface it lies on when it is made.
  */
 
-#include "LabelImage.h"
-#include "LeafBox.h"
-#include "MeshAssembler.h"
+#include "Support/LabelImage.h"
+#include "Octree/LeafBox.h"
+#include "Fill/MeshAssembler.h"
 
 namespace labelmesher
 {

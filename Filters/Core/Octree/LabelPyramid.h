@@ -11,7 +11,7 @@
  * uniform-leaf shortcut never visit voxels.
  */
 
-#include "LabelImage.h"
+#include "Support/LabelImage.h"
 
 #include <array>
 #include <cstdint>

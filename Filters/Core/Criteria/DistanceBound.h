@@ -19,7 +19,7 @@
  * depth counts as a violation: the answer errs only towards refining.
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <vector>
 

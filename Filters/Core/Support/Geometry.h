@@ -9,7 +9,7 @@
  * triangle and an axis-aligned square (a voxel face).
  */
 
-#include "SimplexMesh.h"
+#include "Mesh/SimplexMesh.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,10 +3,10 @@
 
 #include "Octree/LatticeLabels.h"
 #include "Octree/LeafFaces.h"
+#include "Support/UnionFind.h"
 
 #include <algorithm>
 #include <cstdlib>
-#include <numeric>
 #include <vector>
 
 namespace labelmesher
@@ -41,23 +41,6 @@ private:
   std::vector<unsigned char> Bits;
 };
 
-struct UnionFind
-{
-  explicit UnionFind(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(Parent.begin(), Parent.end(), std::size_t(0));
-  }
-  std::size_t Find(std::size_t x)
-  {
-    while (Parent[x] != x)
-      x = Parent[x] = Parent[Parent[x]];
-    return x;
-  }
-  void Unite(std::size_t a, std::size_t b) { Parent[Find(a)] = Find(b); }
-  std::vector<std::size_t> Parent;
-};
-
 /// Pixels of `value` in an n x n face layer are 4-connected, and no 2x2 block is
 /// a checkerboard.
 bool FaceLayerIsOneArc(const std::vector<unsigned char>& layer, int n)
@@ -81,7 +64,7 @@ bool FaceLayerIsOneArc(const std::vector<unsigned char>& layer, int n)
     }
   std::size_t components = 0;
   for (std::size_t i = 0; i < layer.size(); ++i)
-    components += uf.Find(i) == i;
+    components += uf.IsRoot(i);
   return components <= 2; // one region per label (a uniform layer has one)
 }
 
@@ -162,7 +145,7 @@ int Components(const std::vector<int>& grid, int n, int value, const std::vector
     }
   int count = 0;
   for (std::size_t i = 0; i < grid.size(); ++i)
-    count += grid[i] == value && uf.Find(i) == i;
+    count += grid[i] == value && uf.IsRoot(i);
   return count;
 }
 
@@ -275,6 +258,7 @@ bool InteriorIsOneDisk(const LocalLabels& local, int s)
   // Manifold around every voxel vertex: within the (up to) 2x2x2 voxels of the
   // leaf around it, each label is face-connected. This excludes edges shared by
   // four interface faces and pinched vertices.
+  UnionFind voxelSets; // reset per vertex: its storage is reused
   for (int k = 0; k <= s; ++k)
     for (int j = 0; j <= s; ++j)
       for (int i = 0; i <= s; ++i)
@@ -292,24 +276,18 @@ bool InteriorIsOneDisk(const LocalLabels& local, int s)
         }
         if (present < 4)
           continue; // on a leaf edge or corner: no interface face inside can pinch here
-        int parent[8];
-        std::iota(parent, parent + present, 0);
-        auto find = [&](int x) {
-          while (parent[x] != x)
-            x = parent[x];
-          return x;
-        };
+        voxelSets.Reset(present);
         for (int a = 0; a < present; ++a)
           for (int b = a + 1; b < present; ++b)
           {
             const int manhattan = std::abs(where[a][0] - where[b][0]) + std::abs(where[a][1] - where[b][1]) +
               std::abs(where[a][2] - where[b][2]);
             if (manhattan == 1 && label[a] == label[b])
-              parent[find(a)] = find(b);
+              voxelSets.Unite(a, b);
           }
         int components[2] = { 0, 0 };
         for (int a = 0; a < present; ++a)
-          components[label[a]] += find(a) == a;
+          components[label[a]] += voxelSets.IsRoot(a);
         if (components[0] > 1 || components[1] > 1)
           return false;
       }

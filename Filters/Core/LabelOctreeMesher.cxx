@@ -2,11 +2,10 @@
 //
 // Algorithm 1 of the dissertation, stage by stage:
 //   1. label pyramid: which labels each octree block holds (LabelPyramid)
-//   2. octree: refine a p4est forest until every leaf is uniform, or holds two
-//      labels, satisfies the single manifold condition and both fidelity bounds;
-//      2:1 balance across faces and edges; proper boundary leaves meet no
-//      larger leaf, and finer ones only across faces the surface does not
-//      cross (OctreeRefinement, SingleManifoldCondition, LeafSurfacePatch)
+//   2. octree: refine a p4est forest until every leaf meets the refinement
+//      criteria (Criteria/RefinementCriteria.h: at most two labels, the single
+//      manifold condition, both fidelity bounds, the neighbour rule) under 2:1
+//      balance across faces and edges (Octree/OctreeRefinement.h)
 //   3. fill: each leaf becomes cells, labelled as it is made (LeafFill)
 //   4. boundary: faces between different materials (MeshBoundary)
 //
@@ -17,15 +16,13 @@
 
 #include "LabelOctreeMesher.h"
 
-#include "Octree/LabelPyramid.h"
-#include "Octree/LatticeLabels.h"
+#include "Criteria/RefinementCriteria.h"
 #include "Fill/LeafFill.h"
-#include "Fill/LeafSurfacePatch.h"
 #include "Mesh/MeshBoundary.h"
+#include "Octree/LabelPyramid.h"
 #include "Octree/OctreeRefinement.h"
-#include "Criteria/SingleManifoldCondition.h"
+#include "Support/StageClock.h"
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -65,33 +62,6 @@ int DepthFor(const LabelImage& image)
   return depth;
 }
 
-int Log2(int size)
-{
-  int l = 0;
-  while ((1 << l) < size)
-    ++l;
-  return l;
-}
-
-class StageClock
-{
-public:
-  explicit StageClock(std::vector<StageTiming>& timings)
-    : Timings(timings)
-  {
-  }
-  void Finish(const std::string& stage)
-  {
-    const auto now = std::chrono::steady_clock::now();
-    Timings.push_back({ stage, std::chrono::duration<double>(now - Start).count() });
-    Start = now;
-  }
-
-private:
-  std::vector<StageTiming>& Timings;
-  std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
-};
-
 } // namespace
 
 MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& parameters, const ProgressObserver& observer)
@@ -107,27 +77,8 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
   const LabelPyramid pyramid(image, depth);
   clock.Finish("label pyramid");
 
-  const LeafEvaluator evaluate = [&](const LeafBox& leaf) {
-    const LabelSummary labels = pyramid.Block(Log2(leaf.Size), leaf.Origin[0], leaf.Origin[1], leaf.Origin[2]);
-    if (labels.HasMoreThanTwo())
-      return LeafVerdict{ true, 0, 0, 0 };
-    if (labels.IsUniform())
-      return LeafVerdict{ false, labels.First, labels.First, 0 };
-    // Both tests stand alone, so their order only changes the cost. On large
-    // leaves the manifold test walks every voxel (0.35 s for one leaf of
-    // 128^3) and usually passes, while the fidelity test rejects them quickly;
-    // on small leaves it is the other way round.
-    auto manifold = [&] { return SatisfiesSingleManifoldCondition(image, leaf, labels.First, labels.Second); };
-    auto fidelity = [&] {
-      return SatisfiesFidelity(image, leaf, labels.First, labels.Second, parameters.ImageToMeshDistance,
-        parameters.MeshToImageDistance);
-    };
-    const bool accepted = leaf.Size >= 8 ? fidelity() && manifold() : manifold() && fidelity();
-    if (!accepted)
-      return LeafVerdict{ true, 0, 0, 0 };
-    const CornerSigns signs = LeafCornerSigns(image, leaf, labels.First, labels.Second);
-    return LeafVerdict{ false, labels.First, labels.Second, static_cast<std::uint8_t>(RigidFaces(signs, dimension)) };
-  };
+  const RefinementCriteria criteria(image, pyramid, parameters);
+  const LeafEvaluator evaluate = [&criteria](const LeafBox& leaf) { return criteria.Judge(leaf); };
   const std::vector<OctreeLeaf> leaves = BuildOctree(dimension, depth, evaluate, observer, 0.1, 0.6);
   result.NumberOfLeaves = leaves.size();
   clock.Finish("octree");

@@ -9,8 +9,10 @@
  * triangle (2D) or tetrahedral (3D) mesh out.
  */
 
+#include "MesherParameters.h"
 #include "Support/LabelImage.h"
 #include "Support/ProgressObserver.h"
+#include "Support/StageClock.h"
 #include "Mesh/SimplexMesh.h"
 
 #include <string>
@@ -19,22 +21,6 @@
 
 namespace labelmesher
 {
-
-struct MesherParameters
-{
-  /// h(I, M): every point of the image boundary lies within this distance of the
-  /// mesh boundary. Voxel units, >= 0.
-  double ImageToMeshDistance = 2.0;
-  /// h(M, I): every point of the mesh boundary lies within this distance of the
-  /// image boundary. Voxel units, >= 0.
-  double MeshToImageDistance = 2.0;
-};
-
-struct StageTiming
-{
-  std::string Stage;
-  double Seconds = 0.0;
-};
 
 struct MesherResult
 {

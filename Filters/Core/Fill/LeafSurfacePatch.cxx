@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "Fill/LeafSurfacePatch.h"
 
-#include "Octree/LeafFaces.h"
-
-#include <numeric>
+#include "Support/UnionFind.h"
 
 namespace labelmesher
 {
@@ -21,31 +19,6 @@ Point3 LeafPoint(const LeafBox& leaf, int hx, int hy, int hz)
 {
   const std::int64_t s = leaf.Size;
   return FromDoubled(leaf.Low(0) + hx * s, leaf.Low(1) + hy * s, leaf.Low(2) + hz * s, leaf.Dimension);
-}
-
-/// The face of voxel `centre` at half a voxel along `axis` in direction
-/// `step` (a pixel edge in 2D).
-ConvexPiece VoxelFace(int dimension, Point3 centre, int axis, int step)
-{
-  centre[axis] += 0.5 * step;
-  if (dimension == 2)
-  {
-    Point3 a = centre, b = centre;
-    a[1 - axis] -= 0.5;
-    b[1 - axis] += 0.5;
-    return ConvexPiece{ 2, { a, b } };
-  }
-  const auto others = OtherAxes(axis);
-  ConvexPiece square{ 4, {} };
-  const int order[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
-  for (int c = 0; c < 4; ++c)
-  {
-    Point3 p = centre;
-    p[others[0]] += 0.5 * order[c][0];
-    p[others[1]] += 0.5 * order[c][1];
-    square.Points[c] = p;
-  }
-  return square;
 }
 
 } // namespace
@@ -94,18 +67,12 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns
     return {};
   // One simple closed polygon: every point on it has two segments, all connect.
   int degree[20] = {};
-  std::vector<int> parent(20);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x)
-      x = parent[x];
-    return x;
-  };
+  UnionFind polygon(20);
   for (const auto& seg : segments)
   {
     ++degree[seg[0]];
     ++degree[seg[1]];
-    parent[find(seg[0])] = find(seg[1]);
+    polygon.Unite(seg[0], seg[1]);
   }
   for (int node = 0; node < 20; ++node)
     if (degree[node] != 0 && degree[node] != 2)
@@ -116,7 +83,7 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns
     if (signs[c] == 0 && degree[12 + c] != 2)
       return {};
   for (const auto& seg : segments)
-    if (find(seg[0]) != find(segments[0][0]))
+    if (polygon.Find(seg[0]) != polygon.Find(segments[0][0]))
       return {};
   auto position = [&](int node) {
     if (node >= 12)
@@ -135,38 +102,6 @@ std::vector<ConvexPiece> ConeSurfacePatch(const LeafBox& leaf, const CornerSigns
   for (const auto& seg : segments)
     patch.push_back(ConvexPiece{ 3, { centre, position(seg[0]), position(seg[1]) } });
   return patch;
-}
-
-LeafImageBoundary ImageBoundaryInLeaf(const LabelImage& image, const LeafBox& leaf, std::int32_t first,
-  std::int32_t second)
-{
-  LeafImageBoundary boundary;
-  ForEachBoundaryFaceInLeaf(image, leaf,
-    [&](const std::array<int, 3>& voxel, int axis, int step, std::int32_t here, std::int32_t there) {
-      const Point3 centre{ double(leaf.Origin[0] + voxel[0]), double(leaf.Origin[1] + voxel[1]),
-        double(leaf.Origin[2] + voxel[2]) };
-      const ConvexPiece face = VoxelFace(leaf.Dimension, centre, axis, step);
-      boundary.All.push_back(face);
-      if ((here == first && there == second) || (here == second && there == first))
-        boundary.Interface.push_back(face);
-    });
-  return boundary;
-}
-
-bool SatisfiesFidelity(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second,
-  double imageToMesh, double meshToImage)
-{
-  const std::vector<ConvexPiece> patch = ConeSurfacePatch(leaf, LeafCornerSigns(image, leaf, first, second));
-  if (patch.empty())
-    return false;
-  const LeafImageBoundary boundary = ImageBoundaryInLeaf(image, leaf, first, second);
-  for (const ConvexPiece& piece : patch)
-    if (!WithinDistance(piece, boundary.Interface, meshToImage))
-      return false;
-  for (const ConvexPiece& piece : boundary.All)
-    if (!WithinDistance(piece, patch, imageToMesh))
-      return false;
-  return true;
 }
 
 } // namespace labelmesher

@@ -4,6 +4,7 @@
 // every p4est_ name to its p8est_ twin (p4est's own idiom for sharing code).
 // Not a public header: included by exactly those two files.
 
+#include "Criteria/RefinementCriteria.h"
 #include "Octree/OctreeRefinement.h"
 #include "Support/ParallelChunks.h"
 
@@ -169,14 +170,12 @@ void Mark(ForestContext& context, p4est_quadrant_t* q)
 
 bool IsProper(const p4est_quadrant_t* q) { return Data(q).First != Data(q).Second; }
 
-/// A leaf `larger` than its face or edge neighbour `finer` is split when
-/// `finer` is proper (an intersection vertex of `finer` would be a quarter
-/// point of `larger`), and a proper `larger` is split when the points of
-/// `finer` land on one of its rigid faces; `touched` holds the faces of
-/// `larger` that receive them.
+/// The neighbour rule (RefinementCriteria::LargerNeighbourMustSplit) for a
+/// leaf `larger` than its face or edge neighbour `finer`; `touched` holds the
+/// faces of `larger` that receive the points of `finer`.
 void ApplyNeighbourRule(ForestContext& context, const p4est_quadrant_t& finer, p4est_quadrant_t* larger, unsigned touched)
 {
-  if (IsProper(&finer) || (IsProper(larger) && (Data(larger).RigidFaces & touched) != 0))
+  if (RefinementCriteria::LargerNeighbourMustSplit(IsProper(&finer), IsProper(larger), Data(larger).RigidFaces, touched))
     Mark(context, larger);
 }
 

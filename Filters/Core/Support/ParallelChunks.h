@@ -7,11 +7,13 @@
  * What the core runs on several cores: a loop over independent work items
  * taken in chunks by a few std::threads, and a sort. Callers make results independent of the
  * thread count (each item writes its own slot, or per-thread partials are
- * merged in a fixed order), so output never depends on scheduling.
+ * merged in a fixed order), so output never depends on scheduling or on the
+ * thread limit (TestDeterminism.cxx checks it byte for byte).
  */
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -20,10 +22,46 @@
 namespace labelmesher
 {
 
-/// Threads ParallelChunks uses by default: one per core, at most 8.
+namespace detail
+{
+inline std::atomic<unsigned>& ThreadLimit()
+{
+  static std::atomic<unsigned> limit{ 0 }; // 0: not set
+  return limit;
+}
+inline unsigned DefaultThreads()
+{
+  // LABELMESHER_THREADS caps the default, for users on shared machines.
+  static const unsigned threads = [] {
+    unsigned n = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    if (const char* text = std::getenv("LABELMESHER_THREADS"))
+    {
+      char* end = nullptr;
+      const long value = std::strtol(text, &end, 10);
+      if (end != text && *end == '\0' && value >= 1)
+        n = static_cast<unsigned>(std::min(value, 64L));
+    }
+    return n;
+  }();
+  return threads;
+}
+} // namespace detail
+
+/// The most threads any parallel loop of the core uses: the limit set by
+/// SetThreadLimit, else the environment variable LABELMESHER_THREADS (>= 1),
+/// else one per core, at most 8. Results never depend on it.
 inline unsigned MaxThreads()
 {
-  return std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  const unsigned limit = detail::ThreadLimit().load(std::memory_order_relaxed);
+  return limit > 0 ? limit : detail::DefaultThreads();
+}
+
+/// Sets the process-wide thread limit (1 to 64; more than the machine's cores
+/// is allowed, which the determinism test uses); 0 restores the default.
+/// Like vtkSMPTools::Initialize, it is global: set it before work starts.
+inline void SetThreadLimit(unsigned threads)
+{
+  detail::ThreadLimit().store(std::min(threads, 64u), std::memory_order_relaxed);
 }
 
 /// Runs body(thread, begin, end) over chunks of [0, n) on up to `maxThreads`

@@ -3,7 +3,9 @@
 
 #include "Curving/BezierCurver.h"
 #include "Curving/CurvedMeshLocator.h"
+#include "FilterSupport.h"
 #include "LabelImageConversion.h"
+#include "LabelMesherArrayNames.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -25,7 +27,6 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <chrono>
 #include <array>
 #include <cmath>
 #include <exception>
@@ -38,6 +39,10 @@ vtkStandardNewMacro(vtkBezierCurver);
 
 namespace
 {
+namespace arrays = labelmesher::arrays;
+using labelmesher::AddField;
+using labelmesher::AddScalarField;
+
 /*
  * Design. RequestData: (1) flatten the input triangles into the core's 2D
  * SimplexMesh, in the two coordinates of the axis plane the mesh lies in, every
@@ -78,29 +83,12 @@ bool FindAxisPlane(vtkPoints* points, PlaneAxes& plane)
   return false;
 }
 
-template <typename T>
-void AddField(vtkFieldData* fd, const char* name, const std::vector<T>& values)
-{
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  for (const T& v : values)
-  {
-    array->InsertNextValue(static_cast<double>(v));
-  }
-  fd->AddArray(array);
-}
-
-void AddScalarField(vtkFieldData* fd, const char* name, double value)
-{
-  AddField(fd, name, std::vector<double>{ value });
-}
-
 void AddAccuracy(vtkFieldData* fd, const labelmesher::PixelAccuracy& linear,
   const labelmesher::PixelAccuracy& curved, const labelmesher::LabelImage& image)
 {
-  AddScalarField(fd, "Pixels", static_cast<double>(linear.Pixels));
-  AddScalarField(fd, "MisclassifiedPixelsLinear", static_cast<double>(linear.Misclassified));
-  AddScalarField(fd, "MisclassifiedPixelsCurved", static_cast<double>(curved.Misclassified));
+  AddScalarField(fd, arrays::Pixels, static_cast<double>(linear.Pixels));
+  AddScalarField(fd, arrays::MisclassifiedPixelsLinear, static_cast<double>(linear.Misclassified));
+  AddScalarField(fd, arrays::MisclassifiedPixelsCurved, static_cast<double>(curved.Misclassified));
   std::set<std::int32_t> labels(image.Labels.begin(), image.Labels.end());
   labels.erase(0);
   std::vector<double> material, missedLinear, missedCurved, claimedLinear, claimedCurved;
@@ -116,11 +104,182 @@ void AddAccuracy(vtkFieldData* fd, const labelmesher::PixelAccuracy& linear,
     claimedLinear.push_back(count(linear.Claimed, label));
     claimedCurved.push_back(count(curved.Claimed, label));
   }
-  AddField(fd, "AccuracyMaterial", material);
-  AddField(fd, "MissedPixelsLinear", missedLinear);
-  AddField(fd, "MissedPixelsCurved", missedCurved);
-  AddField(fd, "ClaimedPixelsLinear", claimedLinear);
-  AddField(fd, "ClaimedPixelsCurved", claimedCurved);
+  AddField<vtkDoubleArray>(fd, arrays::AccuracyMaterial, material);
+  AddField<vtkDoubleArray>(fd, arrays::MissedPixelsLinear, missedLinear);
+  AddField<vtkDoubleArray>(fd, arrays::MissedPixelsCurved, missedCurved);
+  AddField<vtkDoubleArray>(fd, arrays::ClaimedPixelsLinear, claimedLinear);
+  AddField<vtkDoubleArray>(fd, arrays::ClaimedPixelsCurved, claimedCurved);
+}
+
+
+/// Pass 1: the input triangles as the core's 2D SimplexMesh in the two
+/// coordinates of the axis plane the mesh lies in, every triangle
+/// counter-clockwise there. Returns false with a sentence in `error`.
+bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher::SimplexMesh& linear, std::string& error)
+{
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
+  if (numberOfCells == 0 || !input->GetPoints())
+  {
+    error = "Input mesh has no cells: nothing to curve.";
+    return false;
+  }
+  vtkDataArray* materials = input->GetCellData()->GetArray(arrays::Material);
+  if (!materials || materials->GetNumberOfComponents() != 1)
+  {
+    error = "Input mesh has no one-component cell array 'Material'.";
+    return false;
+  }
+  if (!FindAxisPlane(input->GetPoints(), plane))
+  {
+    error = "Input mesh does not lie in an axis plane (x-y, x-z or y-z): the curver needs a 2D mesh.";
+    return false;
+  }
+  linear.Dimension = 2;
+  linear.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    const double* x = input->GetPoint(p);
+    linear.Points[static_cast<std::size_t>(p)] = { x[plane.Axes[0]], x[plane.Axes[1]], 0.0 };
+  }
+  linear.Connectivity.reserve(static_cast<std::size_t>(3 * numberOfCells));
+  for (vtkIdType c = 0; c < numberOfCells; ++c)
+  {
+    if (input->GetCellType(c) != VTK_TRIANGLE)
+    {
+      error = "Input cell " + std::to_string(c) + " is not a linear triangle (VTK type " +
+        std::to_string(input->GetCellType(c)) + "): the curver needs triangles.";
+      return false;
+    }
+    const double value = materials->GetComponent(c, 0);
+    if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
+    {
+      error = "Input cell " + std::to_string(c) + " has Material " + std::to_string(value) +
+        ": expected a non-negative integer label.";
+      return false;
+    }
+    vtkIdType n;
+    const vtkIdType* ids;
+    input->GetCellPoints(c, n, ids);
+    std::array<std::int64_t, 3> v{ ids[0], ids[1], ids[2] };
+    const auto& a = linear.Points[v[0]];
+    const auto& b = linear.Points[v[1]];
+    const auto& d = linear.Points[v[2]];
+    // The plane's own orientation is arbitrary: make every triangle counter-clockwise.
+    if ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) < 0.0)
+    {
+      std::swap(v[1], v[2]);
+    }
+    linear.Connectivity.insert(linear.Connectivity.end(), v.begin(), v.end());
+    linear.Materials.push_back(static_cast<std::int32_t>(value));
+  }
+  return true;
+}
+
+/// Pass 2: the optional image: its pixels as the core's LabelImage, the map
+/// from pixel indices to mesh coordinates, and the border (which stays straight).
+bool PlaceImage(vtkImageData* imageData, const PlaneAxes& plane, labelmesher::LabelImage& image,
+  std::array<double, 6>& pixelToMesh, labelmesher::CurvingParameters& parameters, std::string& error)
+{
+  labelmesher::ImagePlacement placement;
+  vtkDataArray* scalars = imageData->GetPointData()->GetScalars();
+  if (!labelmesher::ConvertLabelImage(imageData, scalars, image, placement, error))
+  {
+    error += ".";
+    return false;
+  }
+  if (image.Dimension() != 2)
+  {
+    error = "The image on port 1 is 3D: the curver needs the 2D image the mesh came from.";
+    return false;
+  }
+  auto project = [&](double i, double j) {
+    const labelmesher::Point3 x = placement.ToPhysical({ i, j, 0.0 });
+    return labelmesher::Point2{ x[plane.Axes[0]], x[plane.Axes[1]] };
+  };
+  const labelmesher::Point2 o = project(0, 0), di = project(1, 0), dj = project(0, 1);
+  pixelToMesh = { o[0], di[0] - o[0], dj[0] - o[0], o[1], di[1] - o[1], dj[1] - o[1] };
+  // The border is the outer side of the border pixels.
+  parameters.HasBorder = true;
+  parameters.Border = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (double i : { -0.5, image.Dimensions[0] - 0.5 })
+  {
+    for (double j : { -0.5, image.Dimensions[1] - 0.5 })
+    {
+      const labelmesher::Point2 corner = project(i, j);
+      parameters.Border[0] = std::min(parameters.Border[0], corner[0]);
+      parameters.Border[1] = std::max(parameters.Border[1], corner[0]);
+      parameters.Border[2] = std::min(parameters.Border[2], corner[1]);
+      parameters.Border[3] = std::max(parameters.Border[3], corner[1]);
+    }
+  }
+  return true;
+}
+
+/// Pass 4: the Bézier cells back in 3D, with their proven Jacobian bounds.
+void PackBezierCells(const labelmesher::CurvingResult& result, const PlaneAxes& plane, vtkUnstructuredGrid* output)
+{
+  const labelmesher::CurvedMesh& curved = result.Mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(curved.ControlPoints.size()));
+  for (std::size_t p = 0; p < curved.ControlPoints.size(); ++p)
+  {
+    double x[3];
+    x[plane.Axes[0]] = curved.ControlPoints[p][0];
+    x[plane.Axes[1]] = curved.ControlPoints[p][1];
+    x[plane.Normal] = plane.Offset;
+    points->SetPoint(static_cast<vtkIdType>(p), x);
+  }
+  std::vector<std::int64_t> connectivity;
+  connectivity.reserve(10 * curved.Cells.size());
+  for (const auto& cell : curved.Cells)
+  {
+    connectivity.insert(connectivity.end(), cell.begin(), cell.end());
+  }
+  output->SetPoints(points);
+  output->SetCells(VTK_BEZIER_TRIANGLE, labelmesher::MakeCellArray(connectivity, 10));
+
+  const auto cells = static_cast<vtkIdType>(curved.Cells.size());
+  vtkNew<vtkIntArray> material;
+  material->SetName(arrays::Material);
+  vtkNew<vtkDoubleArray> minimumJacobian;
+  minimumJacobian->SetName(arrays::MinimumJacobian);
+  vtkNew<vtkDoubleArray> scaledJacobian;
+  scaledJacobian->SetName(arrays::ScaledJacobian);
+  vtkNew<vtkUnsignedCharArray> valid;
+  valid->SetName(arrays::Valid);
+  material->SetNumberOfValues(cells);
+  minimumJacobian->SetNumberOfValues(cells);
+  scaledJacobian->SetNumberOfValues(cells);
+  valid->SetNumberOfValues(cells);
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    const auto& bounds = result.CellBounds[static_cast<std::size_t>(c)];
+    material->SetValue(c, curved.Materials[static_cast<std::size_t>(c)]);
+    minimumJacobian->SetValue(c, bounds.Lower);
+    scaledJacobian->SetValue(c, bounds.ScaledJacobian());
+    valid->SetValue(c, 1);
+  }
+  for (std::size_t c : result.InvalidCells)
+  {
+    valid->SetValue(static_cast<vtkIdType>(c), 0);
+  }
+  output->GetCellData()->SetScalars(material);
+  output->GetCellData()->AddArray(minimumJacobian);
+  output->GetCellData()->AddArray(scaledJacobian);
+  output->GetCellData()->AddArray(valid);
+}
+
+/// Pass 4 (field data): what curving did.
+void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result)
+{
+  AddScalarField(fd, arrays::InvalidBeforeUntangling, static_cast<double>(result.InvalidBeforeUntangling));
+  AddScalarField(fd, arrays::InvalidCells, static_cast<double>(result.InvalidCells.size()));
+  AddScalarField(fd, arrays::UntanglingSteps, result.UntanglingSteps);
+  AddScalarField(fd, arrays::InterfaceChains, static_cast<double>(result.NumberOfChains));
+  AddScalarField(fd, arrays::ClosedInterfaceChains, static_cast<double>(result.NumberOfClosedChains));
+  AddScalarField(fd, arrays::CurvedEdges, static_cast<double>(result.NumberOfCurvedEdges));
+  AddScalarField(fd, arrays::SplitEars, static_cast<double>(result.SplitEars));
 }
 
 } // anonymous namespace
@@ -157,67 +316,14 @@ int vtkBezierCurver::RequestData(
     return 0;
   }
 
-  // ---- (1) flatten ----
-  const vtkIdType numberOfCells = input->GetNumberOfCells();
-  if (numberOfCells == 0 || !input->GetPoints())
-  {
-    vtkErrorMacro("Input mesh has no cells: nothing to curve.");
-    return 1;
-  }
-  vtkDataArray* materials = input->GetCellData()->GetArray("Material");
-  if (!materials || materials->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("Input mesh has no one-component cell array 'Material'.");
-    return 1;
-  }
+  std::string error;
   PlaneAxes plane;
-  if (!FindAxisPlane(input->GetPoints(), plane))
+  labelmesher::SimplexMesh linear;
+  if (!FlattenTriangles(input, plane, linear, error))
   {
-    vtkErrorMacro("Input mesh does not lie in an axis plane (x-y, x-z or y-z): "
-                  "the curver needs a 2D mesh.");
+    vtkErrorMacro(<< error);
     return 1;
   }
-  labelmesher::SimplexMesh linear;
-  linear.Dimension = 2;
-  linear.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
-  {
-    const double* x = input->GetPoint(p);
-    linear.Points[static_cast<std::size_t>(p)] = { x[plane.Axes[0]], x[plane.Axes[1]], 0.0 };
-  }
-  linear.Connectivity.reserve(static_cast<std::size_t>(3 * numberOfCells));
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
-  {
-    if (input->GetCellType(c) != VTK_TRIANGLE)
-    {
-      vtkErrorMacro("Input cell " << c << " is not a linear triangle (VTK type "
-                                  << input->GetCellType(c) << "): the curver needs triangles.");
-      return 1;
-    }
-    const double value = materials->GetComponent(c, 0);
-    if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
-    {
-      vtkErrorMacro("Input cell " << c << " has Material " << value
-                                  << ": expected a non-negative integer label.");
-      return 1;
-    }
-    vtkIdType n;
-    const vtkIdType* ids;
-    input->GetCellPoints(c, n, ids);
-    std::array<std::int64_t, 3> v{ ids[0], ids[1], ids[2] };
-    const auto& a = linear.Points[v[0]];
-    const auto& b = linear.Points[v[1]];
-    const auto& d = linear.Points[v[2]];
-    // The plane's own orientation is arbitrary: make every triangle counter-clockwise.
-    if ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) < 0.0)
-    {
-      std::swap(v[1], v[2]);
-    }
-    linear.Connectivity.insert(linear.Connectivity.end(), v.begin(), v.end());
-    linear.Materials.push_back(static_cast<std::int32_t>(value));
-  }
-
-  // ---- (2) image: border and pixel placement ----
   labelmesher::CurvingParameters parameters;
   parameters.Smoothing.Continuity =
     this->Smoothness == 1 ? labelmesher::Smoothness::C1 : labelmesher::Smoothness::C2;
@@ -226,55 +332,18 @@ int vtkBezierCurver::RequestData(
   parameters.Untangling.QualityIterations = this->QualityIterations;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
-  if (imageData)
+  if (imageData && !PlaceImage(imageData, plane, image, pixelToMesh, parameters, error))
   {
-    labelmesher::ImagePlacement placement;
-    std::string error;
-    vtkDataArray* scalars = imageData->GetPointData()->GetScalars();
-    if (!labelmesher::ConvertLabelImage(imageData, scalars, image, placement, error))
-    {
-      vtkErrorMacro(<< error << ".");
-      return 1;
-    }
-    if (image.Dimension() != 2)
-    {
-      vtkErrorMacro("The image on port 1 is 3D: the curver needs the 2D image the mesh came from.");
-      return 1;
-    }
-    auto project = [&](double i, double j) {
-      const labelmesher::Point3 x = placement.ToPhysical({ i, j, 0.0 });
-      return labelmesher::Point2{ x[plane.Axes[0]], x[plane.Axes[1]] };
-    };
-    const labelmesher::Point2 o = project(0, 0), di = project(1, 0), dj = project(0, 1);
-    pixelToMesh = { o[0], di[0] - o[0], dj[0] - o[0], o[1], di[1] - o[1], dj[1] - o[1] };
-    // The border is the outer side of the border pixels.
-    parameters.HasBorder = true;
-    parameters.Border = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-    for (double i : { -0.5, image.Dimensions[0] - 0.5 })
-    {
-      for (double j : { -0.5, image.Dimensions[1] - 0.5 })
-      {
-        const labelmesher::Point2 corner = project(i, j);
-        parameters.Border[0] = std::min(parameters.Border[0], corner[0]);
-        parameters.Border[1] = std::max(parameters.Border[1], corner[0]);
-        parameters.Border[2] = std::min(parameters.Border[2], corner[1]);
-        parameters.Border[3] = std::max(parameters.Border[3], corner[1]);
-      }
-    }
+    vtkErrorMacro(<< error);
+    return 1;
   }
 
   // ---- (3) curve ----
-  labelmesher::ProgressObserver observer;
   const double curveShare = imageData ? 0.8 : 1.0;
-  observer.Callback = [this, curveShare](const std::string& stage, double fraction) {
-    this->SetProgressText(stage.c_str());
-    this->UpdateProgress(curveShare * std::clamp(fraction, 0.0, 1.0));
-    return !this->GetAbortExecute();
-  };
   labelmesher::CurvingResult result;
   try
   {
-    result = labelmesher::CurveMesh(linear, parameters, observer);
+    result = labelmesher::CurveMesh(linear, parameters, labelmesher::ForwardProgress(this, 0.0, curveShare));
   }
   catch (const labelmesher::AbortRequested&)
   {
@@ -287,111 +356,33 @@ int vtkBezierCurver::RequestData(
     return 1;
   }
 
-  // ---- (4) pack ----
-  const labelmesher::CurvedMesh& curved = result.Mesh;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(curved.ControlPoints.size()));
-  for (std::size_t p = 0; p < curved.ControlPoints.size(); ++p)
-  {
-    double x[3];
-    x[plane.Axes[0]] = curved.ControlPoints[p][0];
-    x[plane.Axes[1]] = curved.ControlPoints[p][1];
-    x[plane.Normal] = plane.Offset;
-    points->SetPoint(static_cast<vtkIdType>(p), x);
-  }
-  const auto cells = static_cast<vtkIdType>(curved.Cells.size());
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(cells + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(10 * cells);
-  for (vtkIdType c = 0; c <= cells; ++c)
-  {
-    offsets->SetValue(c, 10 * c);
-  }
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    for (int k = 0; k < 10; ++k)
-    {
-      connectivity->SetValue(10 * c + k, curved.Cells[static_cast<std::size_t>(c)][k]);
-    }
-  }
-  vtkNew<vtkCellArray> cellArray;
-  cellArray->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetCells(VTK_BEZIER_TRIANGLE, cellArray);
-
-  vtkNew<vtkIntArray> material;
-  material->SetName("Material");
-  vtkNew<vtkDoubleArray> minimumJacobian;
-  minimumJacobian->SetName("MinimumJacobian");
-  vtkNew<vtkDoubleArray> scaledJacobian;
-  scaledJacobian->SetName("ScaledJacobian");
-  vtkNew<vtkUnsignedCharArray> valid;
-  valid->SetName("Valid");
-  material->SetNumberOfValues(cells);
-  minimumJacobian->SetNumberOfValues(cells);
-  scaledJacobian->SetNumberOfValues(cells);
-  valid->SetNumberOfValues(cells);
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    const auto& bounds = result.CellBounds[static_cast<std::size_t>(c)];
-    material->SetValue(c, curved.Materials[static_cast<std::size_t>(c)]);
-    minimumJacobian->SetValue(c, bounds.Lower);
-    scaledJacobian->SetValue(c, bounds.ScaledJacobian());
-    valid->SetValue(c, 1);
-  }
-  for (std::size_t c : result.InvalidCells)
-  {
-    valid->SetValue(static_cast<vtkIdType>(c), 0);
-  }
-  output->GetCellData()->SetScalars(material);
-  output->GetCellData()->AddArray(minimumJacobian);
-  output->GetCellData()->AddArray(scaledJacobian);
-  output->GetCellData()->AddArray(valid);
-
+  PackBezierCells(result, plane, output);
   vtkFieldData* fd = output->GetFieldData();
-  AddScalarField(fd, "Smoothness", this->Smoothness);
-  AddScalarField(fd, "Tension", this->Tension);
-  AddScalarField(fd, "MaximumUntanglingSteps", this->MaximumUntanglingSteps);
-  AddScalarField(fd, "QualityIterations", this->QualityIterations);
-  AddScalarField(fd, "InvalidBeforeUntangling", static_cast<double>(result.InvalidBeforeUntangling));
-  AddScalarField(fd, "InvalidCells", static_cast<double>(result.InvalidCells.size()));
-  AddScalarField(fd, "UntanglingSteps", result.UntanglingSteps);
-  AddScalarField(fd, "InterfaceChains", static_cast<double>(result.NumberOfChains));
-  AddScalarField(fd, "ClosedInterfaceChains", static_cast<double>(result.NumberOfClosedChains));
-  AddScalarField(fd, "CurvedEdges", static_cast<double>(result.NumberOfCurvedEdges));
-  AddScalarField(fd, "SplitEars", static_cast<double>(result.SplitEars));
+  AddScalarField(fd, arrays::Smoothness, this->Smoothness);
+  AddScalarField(fd, arrays::Tension, this->Tension);
+  AddScalarField(fd, arrays::MaximumUntanglingSteps, this->MaximumUntanglingSteps);
+  AddScalarField(fd, arrays::QualityIterations, this->QualityIterations);
+  AddCurvingCounts(fd, result);
 
-  // ---- (5) accuracy ----
+  // ---- (5) accuracy against the image ----
   if (imageData)
   {
-    const auto start = std::chrono::steady_clock::now();
+    labelmesher::StageClock clock(result.Timings);
     this->SetProgressText("Measuring pixel accuracy");
     this->UpdateProgress(0.85);
     const labelmesher::PixelAccuracy linearAccuracy = labelmesher::MeasurePixelAccuracy(
       labelmesher::MakeStraightCurvedMesh(linear), image, pixelToMesh);
     const labelmesher::PixelAccuracy curvedAccuracy =
-      labelmesher::MeasurePixelAccuracy(curved, image, pixelToMesh);
+      labelmesher::MeasurePixelAccuracy(result.Mesh, image, pixelToMesh);
     AddAccuracy(fd, linearAccuracy, curvedAccuracy, image);
-    result.Timings.emplace_back("pixel accuracy",
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    clock.Finish("pixel accuracy");
   }
-  vtkNew<vtkStringArray> stageName;
-  stageName->SetName("StageName");
-  std::vector<double> seconds;
-  for (const auto& [stage, s] : result.Timings)
-  {
-    stageName->InsertNextValue(stage);
-    seconds.push_back(s);
-  }
-  fd->AddArray(stageName);
-  AddField(fd, "StageSeconds", seconds);
+  labelmesher::AddStageTimings(fd, result.Timings);
   this->UpdateProgress(1.0);
 
   if (!result.Valid)
   {
-    vtkErrorMacro(<< result.InvalidCells.size() << " of " << cells
+    vtkErrorMacro(<< result.InvalidCells.size() << " of " << result.Mesh.Cells.size()
                   << " cells could not be proven valid after untangling with up to "
                   << this->MaximumUntanglingSteps
                   << " steps; they are marked Valid = 0 in the output.");

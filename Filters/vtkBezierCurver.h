@@ -4,9 +4,10 @@
  * @brief   curve a 2D labelled triangle mesh into a valid cubic Bézier mesh with
  *          C1 or C2 smooth material boundaries
  *
- * vtkBezierCurver implements the curvilinear mesher of chapter 4 of F.
- * Drakopoulos' dissertation ("Automatic linear and curvilinear mesh generation
- * driven by validity, fidelity and topological guarantees") as a thin adapter
+ * vtkBezierCurver implements the curvilinear mesher of chapter 4 of J. Xu,
+ * "Automatic linear and curvilinear mesh generation driven by validity,
+ * fidelity and topological guarantees", PhD dissertation, Old Dominion
+ * University, 2020 (director A. Chernikov), as a thin adapter
  * over the VTK-free core function labelmesher::CurveMesh
  * (Filters/Core/Curving/BezierCurver.h):
  *

@@ -2,7 +2,8 @@
 /**
  * @class   vtkLabelOctreeMesher
  * @brief   mesh a multi-label image into labelled tetrahedra (3D) or triangles (2D)
- *          with bounded angles and bounded two-sided Hausdorff distance
+ *          with proven angle bounds, bounded two-sided Hausdorff distance and the
+ *          image's topology per material
  *
  * vtkLabelOctreeMesher takes a label image -- a vtkImageData whose point scalars
  * are integer labels, 0 meaning background -- and produces a conforming simplicial
@@ -14,28 +15,35 @@
  *
  * The filter is a thin adapter over the VTK-free core function
  * labelmesher::MeshLabelImage (Filters/Core/LabelOctreeMesher.h), which implements
- * the initial mesh of the ORD method (F. Drakopoulos, "Automatic linear and
- * curvilinear mesh generation driven by validity, fidelity and topological
- * guarantees", PhD dissertation, Old Dominion University; referred to below by
- * section):
+ * the initial mesh of the octree refinement and decimation (ORD) method of
+ * J. Xu, "Automatic linear and curvilinear mesh generation driven by validity,
+ * fidelity and topological guarantees", PhD dissertation, Old Dominion
+ * University, 2020 (and J. Xu, A. Chernikov, "Homeomorphic tetrahedralization of
+ * multimaterial images with quality and fidelity guarantees", 26th International
+ * Meshing Roundtable, 2017); sections below are the dissertation's:
  *
  * 1. An octree (quadtree in 2D) over the padded image is refined until every leaf
- *    that touches the image boundary (section 2.1) lies within the fidelity
- *    distance of it, holds at most two labels and satisfies the single manifold
- *    condition (section 2.4); the tree is then balanced by the 2-to-1 rule across
- *    faces and edges (section 2.2; Algorithm 2 of section 3.1.1).
- * 2. A waterproof surface is extracted leaf by leaf from the signs of the leaf
+ *    holds one label, or two labels whose image boundary satisfies the single
+ *    manifold condition (section 2.4) and lies within both distances of the
+ *    leaf's surface patch (tested exactly, not through a distance transform);
+ *    2:1 balance across faces and edges, and a neighbour rule that keeps the
+ *    configurations the angle proof covers (Filters/Core/Criteria/RefinementCriteria.h).
+ * 2. A waterproof surface is extracted leaf by leaf from the labels at the leaf
  *    corners (section 3.1.1, "Waterproof surface mesh").
  * 3. Every leaf is filled with tetrahedra (triangles) coned from its centre to a
  *    triangulation of its faces that contains the surface (section 3.1.2).
  *
- * Section 3.2 states the guarantees: a minimum dihedral (2D: planar) angle of
- * 19.47 degrees (3.2.1), two-sided Hausdorff distance between the image boundary
- * and the mesh boundary within ImageToMeshDistance and MeshToImageDistance (3.2.2)
- * and, for each material, the same topology as the image region (3.2.3). The
- * figures this implementation actually achieves are measured by the checks in
- * Filters/Core/Checks and written into the output's field data (see below), so a
- * pipeline can verify them rather than trust them.
+ * Guarantees. Minimum dihedral angle 30 degrees (3D), minimum planar angle 45
+ * degrees (2D): proved by exhaustive enumeration of the face configurations the
+ * octree rules allow (Testing/Cxx/TestAngleBoundEnumeration.cxx); the
+ * dissertation's 19.47 degree claim does not hold for its own rules on graded
+ * faces, which the neighbour rule excludes. Two-sided Hausdorff distance between
+ * the image boundary and the mesh boundary within ImageToMeshDistance and
+ * MeshToImageDistance, overall and per material (section 3.2.2). For each
+ * material, the same number of components and Euler characteristic as its image
+ * region (section 3.2.3). The figures the output actually has are measured by the
+ * independent checks in Filters/Core/Checks and written into the field data (see
+ * below), so a pipeline can verify them rather than trust them.
  *
  * Geometry. Voxel (i, j, k) is centred at its VTK point; the image boundary runs
  * along the voxel faces half way between points. Output points are in physical
@@ -49,20 +57,21 @@
  *
  * Output port 0, vtkUnstructuredGrid: VTK_TETRA (3D, positively oriented) or
  * VTK_TRIANGLE (2D) cells. Cell data: int array `Material` (the image label, also
- * the active scalars). Cells of label 0 are dropped unless IncludeBackground is on.
- * Field data:
+ * the active scalars). Cells of label 0 are dropped unless IncludeBackground is on
+ * (vtkMeshDecimator needs them). Field data (names in LabelMesherArrayNames.h):
  * - `ImageToMeshDistance`, `MeshToImageDistance`, `IncludeBackground`: the
  *   parameters used; `VoxelSize`: physical length of one distance unit;
  *   `NumberOfLeaves`: octree leaves;
  * - `StageName` (string) and `StageSeconds` (double): wall time per stage of the
- *   core (and `measure` for the checks);
- * - when the checks are built and MeasureOutput is on: `MinimumAngle`,
- *   `MaximumAngle` (degrees, dihedral in 3D, planar in 2D, over the output
- *   cells), `InvertedCells`, `MeasuredImageToMeshDistance`,
- *   `MeasuredMeshToImageDistance` (upper bounds on the one-sided Hausdorff
- *   distances, distance units) and, one tuple per non-zero material,
- *   `TopologyMaterial`, `ImageComponents`, `ImageEulerCharacteristic`,
- *   `MeshComponents`, `MeshEulerCharacteristic`, `TopologyMatches` (1 or 0).
+ *   core, and one `measure: ...` stage per check;
+ * - when MeasureOutput is on: `MinimumAngle`, `MaximumAngle` (degrees, dihedral
+ *   in 3D, planar in 2D, over the output cells), `InvertedCells`;
+ *   `OverSharedFaces`, `HangingVertices`, `NonManifoldBoundaryEdges`
+ *   (conformity); `MeasuredImageToMeshDistance`, `MeasuredMeshToImageDistance`
+ *   (upper bounds on the one-sided Hausdorff distances, distance units) and, one
+ *   tuple per non-zero material, `TopologyMaterial`, `ImageComponents`,
+ *   `ImageEulerCharacteristic`, `MeshComponents`, `MeshEulerCharacteristic`,
+ *   `TopologyMatches` (1 or 0).
  *
  * Output port 1, vtkPolyData: the boundary between different materials (the
  * background included): triangles in 3D, lines in 2D, with the 2-component int
@@ -76,11 +85,12 @@
  * non-zero voxel; otherwise the filter reports an error and produces empty output.
  * Only the point scalars (or the array selected with SetInputArrayToProcess on
  * points) are used. The distances are in voxel units of the smallest spacing, not
- * physical units. The 19.47 degree bound is the dissertation's claim; the
- * project's issue notes record which configurations have been verified.
+ * physical units. On 3D voxel data the boundary leaves end up one voxel in size
+ * (the README's "Limitation"), so the mesh is large: vtkMeshDecimator coarsens it
+ * within the same guarantees.
  *
  * @sa
- * vtkSurfaceNets3D vtkDiscreteFlyingEdges3D vtkImageToPoints vtkDelaunay3D
+ * vtkMeshDecimator vtkBezierCurver vtkSurfaceNets3D vtkDiscreteFlyingEdges3D
  */
 
 #ifndef vtkLabelOctreeMesher_h
@@ -89,7 +99,17 @@
 #include "LabelMesherFiltersModule.h" // For export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <cstddef> // For std::size_t
+#include <vector>  // For the timings
+
+class vtkFieldData;
 class vtkPolyData;
+namespace labelmesher
+{
+struct LabelImage;
+struct SimplexMesh;
+struct StageTiming;
+}
 
 class LABELMESHERFILTERS_EXPORT vtkLabelOctreeMesher : public vtkUnstructuredGridAlgorithm
 {
@@ -128,9 +148,9 @@ public:
 
   ///@{
   /**
-   * Measure the output (angles, Hausdorff distances, topology per material) and
-   * store the figures in the field data. Costs roughly as much as meshing.
-   * Default on; has no effect when the checks are not built.
+   * Measure the output (angles, conformity, Hausdorff distances, topology per
+   * material) and store the figures in the field data. Costs one to two times
+   * the meshing. Default on.
    */
   vtkSetMacro(MeasureOutput, bool);
   vtkGetMacro(MeasureOutput, bool);
@@ -149,6 +169,11 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Pass 3 of RequestData: the parameters and octree size in the field data.
+  void AddParameters(vtkFieldData* fd, double voxelSize, std::size_t leaves) const;
+  /// Pass 4: the checks on the kept cells, when MeasureOutput is on.
+  void Measure(vtkFieldData* fd, const labelmesher::LabelImage& image, const labelmesher::SimplexMesh& kept,
+    double measureStart, std::vector<labelmesher::StageTiming>& timings);
 
   double ImageToMeshDistance = 2.0;
   double MeshToImageDistance = 2.0;

@@ -90,7 +90,7 @@ std::string Usage()
          "  --include-background       keep the cells of label 0\n"
          "  --no-measure               do not measure the output (angles, distances,\n"
          "                             conformity, topology); saves 1-2x the meshing time\n"
-         "  --quiet                    no progress bar, no summary (errors only)\n"
+         "  -q, --quiet                no progress bar, no summary (errors only)\n"
          "curve options:\n"
          "  --smoothness 1|2           continuity of the curved boundaries: C1 or C2  [default 2]\n"
          "  --tension T                C1 tangent handle length factor in [0, 1]\n"

@@ -4,6 +4,8 @@
 #include "Arguments.h"
 #include "JsonWriter.h"
 
+#include "LabelMesherArrayNames.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -17,6 +19,7 @@
 
 namespace labelmesher_cli
 {
+namespace arrays = labelmesher::arrays;
 namespace
 {
 
@@ -39,17 +42,17 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
   vtkFieldData* fd = curved->GetFieldData();
-  r.InvalidBeforeUntangling = FieldCount(fd, "InvalidBeforeUntangling");
-  r.InvalidCells = FieldCount(fd, "InvalidCells");
-  r.UntanglingSteps = FieldCount(fd, "UntanglingSteps");
-  r.InterfaceChains = FieldCount(fd, "InterfaceChains");
-  r.ClosedInterfaceChains = FieldCount(fd, "ClosedInterfaceChains");
-  r.CurvedEdges = FieldCount(fd, "CurvedEdges");
-  r.SplitEars = FieldCount(fd, "SplitEars");
+  r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
+  r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
+  r.UntanglingSteps = FieldCount(fd, arrays::UntanglingSteps);
+  r.InterfaceChains = FieldCount(fd, arrays::InterfaceChains);
+  r.ClosedInterfaceChains = FieldCount(fd, arrays::ClosedInterfaceChains);
+  r.CurvedEdges = FieldCount(fd, arrays::CurvedEdges);
+  r.SplitEars = FieldCount(fd, arrays::SplitEars);
 
-  vtkDataArray* scaled = curved->GetCellData()->GetArray("ScaledJacobian");
-  vtkDataArray* minimum = curved->GetCellData()->GetArray("MinimumJacobian");
-  vtkDataArray* valid = curved->GetCellData()->GetArray("Valid");
+  vtkDataArray* scaled = curved->GetCellData()->GetArray(arrays::ScaledJacobian);
+  vtkDataArray* minimum = curved->GetCellData()->GetArray(arrays::MinimumJacobian);
+  vtkDataArray* valid = curved->GetCellData()->GetArray(arrays::Valid);
   r.MinimumScaledJacobian = r.Cells > 0 ? 1.0 : 0.0;
   r.MinimumJacobian = r.Cells > 0 ? HUGE_VAL : 0.0;
   for (vtkIdType c = 0; scaled && minimum && valid && c < r.Cells; ++c)
@@ -65,24 +68,24 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
     ++r.ScaledJacobianHistogram[static_cast<std::size_t>(bin)];
   }
 
-  r.HasAccuracy = fd->GetArray("MisclassifiedPixelsLinear") != nullptr;
+  r.HasAccuracy = fd->GetArray(arrays::MisclassifiedPixelsLinear) != nullptr;
   if (r.HasAccuracy)
   {
-    r.Pixels = FieldCount(fd, "Pixels");
-    r.MisclassifiedLinear = FieldCount(fd, "MisclassifiedPixelsLinear");
-    r.MisclassifiedCurved = FieldCount(fd, "MisclassifiedPixelsCurved");
-    if (vtkDataArray* materials = fd->GetArray("AccuracyMaterial"))
+    r.Pixels = FieldCount(fd, arrays::Pixels);
+    r.MisclassifiedLinear = FieldCount(fd, arrays::MisclassifiedPixelsLinear);
+    r.MisclassifiedCurved = FieldCount(fd, arrays::MisclassifiedPixelsCurved);
+    if (vtkDataArray* materials = fd->GetArray(arrays::AccuracyMaterial))
     {
       for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
       {
         auto& entry = r.AccuracyPerMaterial[static_cast<int>(materials->GetComponent(t, 0))];
-        entry.first = { FieldCount(fd, "MissedPixelsLinear", t), FieldCount(fd, "ClaimedPixelsLinear", t) };
-        entry.second = { FieldCount(fd, "MissedPixelsCurved", t), FieldCount(fd, "ClaimedPixelsCurved", t) };
+        entry.first = { FieldCount(fd, arrays::MissedPixelsLinear, t), FieldCount(fd, arrays::ClaimedPixelsLinear, t) };
+        entry.second = { FieldCount(fd, arrays::MissedPixelsCurved, t), FieldCount(fd, arrays::ClaimedPixelsCurved, t) };
       }
     }
   }
-  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray("StageName"));
-  vtkDataArray* seconds = fd->GetArray("StageSeconds");
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray(arrays::StageName));
+  vtkDataArray* seconds = fd->GetArray(arrays::StageSeconds);
   for (vtkIdType s = 0; names && seconds && s < names->GetNumberOfValues(); ++s)
   {
     r.Timings.emplace_back(names->GetValue(s), seconds->GetComponent(s, 0));

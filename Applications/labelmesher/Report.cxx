@@ -4,6 +4,8 @@
 #include "Arguments.h"
 #include "JsonWriter.h"
 
+#include "LabelMesherArrayNames.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -17,6 +19,7 @@
 
 namespace labelmesher_cli
 {
+namespace arrays = labelmesher::arrays;
 
 std::optional<double> FieldValue(vtkFieldData* fd, const char* name, vtkIdType tuple)
 {
@@ -66,7 +69,7 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
 
   r.Points = mesh->GetNumberOfPoints();
   r.Cells = mesh->GetNumberOfCells();
-  if (vtkDataArray* material = mesh->GetCellData()->GetArray("Material"))
+  if (vtkDataArray* material = mesh->GetCellData()->GetArray(arrays::Material))
   {
     for (vtkIdType c = 0; c < material->GetNumberOfTuples(); ++c)
     {
@@ -75,31 +78,31 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
   }
 
   vtkFieldData* fd = mesh->GetFieldData();
-  r.VoxelSize = FieldValue(fd, "VoxelSize").value_or(1.0);
-  r.MinimumAngle = FieldValue(fd, "MinimumAngle");
-  r.MaximumAngle = FieldValue(fd, "MaximumAngle");
-  r.InvertedCells = FieldValue(fd, "InvertedCells");
-  r.MeasuredImageToMesh = FieldValue(fd, "MeasuredImageToMeshDistance");
-  r.MeasuredMeshToImage = FieldValue(fd, "MeasuredMeshToImageDistance");
-  r.OverSharedFaces = FieldValue(fd, "OverSharedFaces");
-  r.HangingVertices = FieldValue(fd, "HangingVertices");
-  r.NonManifoldBoundaryEdges = FieldValue(fd, "NonManifoldBoundaryEdges");
-  if (vtkDataArray* materials = fd->GetArray("TopologyMaterial"))
+  r.VoxelSize = FieldValue(fd, arrays::VoxelSize).value_or(1.0);
+  r.MinimumAngle = FieldValue(fd, arrays::MinimumAngle);
+  r.MaximumAngle = FieldValue(fd, arrays::MaximumAngle);
+  r.InvertedCells = FieldValue(fd, arrays::InvertedCells);
+  r.MeasuredImageToMesh = FieldValue(fd, arrays::MeasuredImageToMeshDistance);
+  r.MeasuredMeshToImage = FieldValue(fd, arrays::MeasuredMeshToImageDistance);
+  r.OverSharedFaces = FieldValue(fd, arrays::OverSharedFaces);
+  r.HangingVertices = FieldValue(fd, arrays::HangingVertices);
+  r.NonManifoldBoundaryEdges = FieldValue(fd, arrays::NonManifoldBoundaryEdges);
+  if (vtkDataArray* materials = fd->GetArray(arrays::TopologyMaterial))
   {
     for (vtkIdType t = 0; t < materials->GetNumberOfTuples(); ++t)
     {
       TopologyEntry e;
       e.Material = static_cast<int>(materials->GetComponent(t, 0));
-      e.ImageComponents = FieldCount(fd, "ImageComponents", t);
-      e.ImageEuler = FieldCount(fd, "ImageEulerCharacteristic", t);
-      e.MeshComponents = FieldCount(fd, "MeshComponents", t);
-      e.MeshEuler = FieldCount(fd, "MeshEulerCharacteristic", t);
-      e.Matches = FieldCount(fd, "TopologyMatches", t) != 0;
+      e.ImageComponents = FieldCount(fd, arrays::ImageComponents, t);
+      e.ImageEuler = FieldCount(fd, arrays::ImageEulerCharacteristic, t);
+      e.MeshComponents = FieldCount(fd, arrays::MeshComponents, t);
+      e.MeshEuler = FieldCount(fd, arrays::MeshEulerCharacteristic, t);
+      e.Matches = FieldCount(fd, arrays::TopologyMatches, t) != 0;
       r.Topology.push_back(e);
     }
   }
-  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray("StageName"));
-  vtkDataArray* seconds = fd->GetArray("StageSeconds");
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray(arrays::StageName));
+  vtkDataArray* seconds = fd->GetArray(arrays::StageSeconds);
   if (names && seconds)
   {
     for (vtkIdType s = 0; s < names->GetNumberOfValues() && s < seconds->GetNumberOfTuples(); ++s)

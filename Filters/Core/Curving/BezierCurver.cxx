@@ -131,7 +131,7 @@ CurvingResult CurveMesh(
   result.Mesh = MakeStraightCurvedMesh(result.Linear);
   const auto prescribed = SmoothInterfaces(
     result.Linear, result.Mesh, chains, parameters.Smoothing, result.NumberOfCurvedEdges);
-  result.Timings.emplace_back("smooth boundaries", SecondsSince(start));
+  result.Timings.push_back({ "smooth boundaries", SecondsSince(start) });
 
   // How many cells curving the boundary alone would break (the dissertation's
   // "invalid elements" before the FE method, section 5.2.4).
@@ -144,7 +144,7 @@ CurvingResult CurveMesh(
     }
     result.InvalidBeforeUntangling = CountInvalidCells(result.Mesh, boundaryOnly);
   }
-  result.Timings.emplace_back("validity before untangling", SecondsSince(start));
+  result.Timings.push_back({ "validity before untangling", SecondsSince(start) });
 
   start = Clock::now();
   ProgressObserver untangling;
@@ -154,7 +154,7 @@ CurvingResult CurveMesh(
   const UntanglingResult untangled =
     UntangleControlNets(result.Mesh, prescribed, parameters.Untangling, untangling);
   result.UntanglingSteps = untangled.Steps;
-  result.Timings.emplace_back("untangle", SecondsSince(start));
+  result.Timings.push_back({ "untangle", SecondsSince(start) });
 
   // Section 4.2: a proven bound for every cell. A cell is valid when either the
   // control net (Theorem 4.2.1) or the subdivided Jacobian proves det J > 0.
@@ -174,7 +174,7 @@ CurvingResult CurveMesh(
     }
   }
   result.Valid = result.InvalidCells.empty();
-  result.Timings.emplace_back("bound Jacobians", SecondsSince(start));
+  result.Timings.push_back({ "bound Jacobians", SecondsSince(start) });
   observer.Report("Bounding Jacobians", 1.0);
   return result;
 }

@@ -19,6 +19,7 @@
 #include "Curving/InterfaceChains.h"
 #include "Curving/JacobianBound.h"
 #include "Support/ProgressObserver.h"
+#include "Support/StageClock.h"
 #include "Mesh/SimplexMesh.h"
 #include "Curving/SmoothBoundary.h"
 
@@ -59,7 +60,7 @@ struct CurvingResult
   std::size_t NumberOfChains = 0;
   std::size_t NumberOfClosedChains = 0;
   std::size_t NumberOfCurvedEdges = 0;
-  std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
+  std::vector<StageTiming> Timings;
 };
 
 /// Curves `linear` (Dimension 2, counter-clockwise triangles in the x-y plane).

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "FilterSupport.h"
+
+#include "Checks/MeshChecks.h"
+#include "LabelMesherArrayNames.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace labelmesher
+{
+
+ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start, double share)
+{
+  ProgressObserver observer;
+  observer.Callback = [algorithm, start, share](const std::string& stage, double fraction) {
+    algorithm->SetProgressText(stage.c_str());
+    algorithm->UpdateProgress(start + share * std::clamp(fraction, 0.0, 1.0));
+    return !algorithm->GetAbortExecute();
+  };
+  return observer;
+}
+
+vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell)
+{
+  const std::size_t cells = connectivity.size() / static_cast<std::size_t>(std::max(1, verticesPerCell));
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(cells + 1));
+  for (std::size_t c = 0; c <= cells; ++c)
+  {
+    offsets->SetValue(static_cast<vtkIdType>(c), static_cast<vtkIdType>(c * verticesPerCell));
+  }
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetNumberOfValues(static_cast<vtkIdType>(connectivity.size()));
+  std::copy(connectivity.begin(), connectivity.end(), ids->GetPointer(0));
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  array->SetData(offsets, ids);
+  return array;
+}
+
+void AddScalarField(vtkFieldData* fd, const char* name, double value)
+{
+  AddField<vtkDoubleArray>(fd, name, std::vector<double>{ value });
+}
+
+void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings)
+{
+  std::vector<std::string> names;
+  std::vector<double> seconds;
+  for (const StageTiming& timing : timings)
+  {
+    names.push_back(timing.Stage);
+    seconds.push_back(timing.Seconds);
+  }
+  AddField<vtkStringArray>(fd, arrays::StageName, names);
+  AddField<vtkDoubleArray>(fd, arrays::StageSeconds, seconds);
+}
+
+void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh,
+  std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished)
+{
+  // One stage per check, so that users see what the verification costs.
+  StageClock clock(timings);
+  int checksDone = 0;
+  auto done = [&](const char* check) {
+    clock.Finish(std::string("measure: ") + check);
+    if (finished)
+    {
+      finished(++checksDone);
+    }
+  };
+
+  const QualityReport quality = MeasureQuality(mesh);
+  AddScalarField(fd, arrays::MinimumAngle, quality.MinimumAngle);
+  AddScalarField(fd, arrays::MaximumAngle, quality.MaximumAngle);
+  AddScalarField(fd, arrays::InvertedCells, static_cast<double>(quality.InvertedCells));
+  done("angles");
+
+  const ConformityReport conformity = MeasureConformity(mesh);
+  AddScalarField(fd, arrays::OverSharedFaces, static_cast<double>(conformity.OverSharedFaces));
+  AddScalarField(fd, arrays::HangingVertices, static_cast<double>(conformity.HangingVertices));
+  AddScalarField(fd, arrays::NonManifoldBoundaryEdges, static_cast<double>(conformity.NonManifoldBoundaryEdges));
+  done("conformity");
+
+  const HausdorffReport distances = MeasureHausdorff(image, mesh);
+  AddScalarField(fd, arrays::MeasuredImageToMeshDistance, distances.Overall.ImageToMesh);
+  AddScalarField(fd, arrays::MeasuredMeshToImageDistance, distances.Overall.MeshToImage);
+  done("distances");
+
+  std::vector<int> material, imageComponents, imageEuler, meshComponents, meshEuler, matches;
+  for (const auto& [label, comparison] : CompareTopology(image, mesh))
+  {
+    material.push_back(label);
+    imageComponents.push_back(static_cast<int>(comparison.Image.Components));
+    imageEuler.push_back(static_cast<int>(comparison.Image.EulerCharacteristic));
+    meshComponents.push_back(static_cast<int>(comparison.Mesh.Components));
+    meshEuler.push_back(static_cast<int>(comparison.Mesh.EulerCharacteristic));
+    matches.push_back(comparison.Matches() ? 1 : 0);
+  }
+  AddField<vtkIntArray>(fd, arrays::TopologyMaterial, material);
+  AddField<vtkIntArray>(fd, arrays::ImageComponents, imageComponents);
+  AddField<vtkIntArray>(fd, arrays::ImageEulerCharacteristic, imageEuler);
+  AddField<vtkIntArray>(fd, arrays::MeshComponents, meshComponents);
+  AddField<vtkIntArray>(fd, arrays::MeshEulerCharacteristic, meshEuler);
+  AddField<vtkIntArray>(fd, arrays::TopologyMatches, matches);
+  done("topology");
+}
+
+namespace
+{
+
+vtkSmartPointer<vtkPoints> PhysicalPoints(const std::vector<Point3>& points, const ImagePlacement& placement)
+{
+  auto physical = vtkSmartPointer<vtkPoints>::New();
+  physical->SetDataTypeToDouble();
+  physical->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    physical->SetPoint(static_cast<vtkIdType>(p), placement.ToPhysical(points[p]).data());
+  }
+  return physical;
+}
+
+} // namespace
+
+void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output)
+{
+  const int nv = mesh.VerticesPerCell();
+  std::vector<std::int64_t> connectivity = mesh.Connectivity;
+  if (mesh.Dimension == 3 && placement.ReversesOrientation())
+  {
+    for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+    {
+      std::swap(connectivity[c * nv + 1], connectivity[c * nv + 2]);
+    }
+  }
+  output->SetPoints(PhysicalPoints(mesh.Points, placement));
+  output->SetCells(mesh.Dimension == 3 ? VTK_TETRA : VTK_TRIANGLE, MakeCellArray(connectivity, nv));
+  vtkNew<vtkIntArray> material;
+  material->SetName(arrays::Material);
+  material->SetNumberOfValues(static_cast<vtkIdType>(mesh.NumberOfCells()));
+  std::copy(mesh.Materials.begin(), mesh.Materials.end(), material->GetPointer(0));
+  output->GetCellData()->SetScalars(material);
+}
+
+void PackInterfaces(const SimplexMesh& faces, const std::vector<std::pair<std::int32_t, std::int32_t>>& sides,
+  const ImagePlacement& placement, vtkPolyData* output)
+{
+  output->SetPoints(PhysicalPoints(faces.Points, placement));
+  // A facet of a d-simplex has d vertices; the faces' mesh has Dimension d - 1.
+  const int facetVertices = faces.Dimension + 1;
+  auto cells = MakeCellArray(faces.Connectivity, facetVertices);
+  if (facetVertices == 3)
+  {
+    output->SetPolys(cells);
+  }
+  else
+  {
+    output->SetLines(cells);
+  }
+  vtkNew<vtkIntArray> materials;
+  materials->SetName(arrays::Materials);
+  materials->SetNumberOfComponents(2);
+  materials->SetNumberOfTuples(cells->GetNumberOfCells());
+  for (vtkIdType f = 0; f < cells->GetNumberOfCells() && f < static_cast<vtkIdType>(sides.size()); ++f)
+  {
+    materials->SetTypedComponent(f, 0, sides[static_cast<std::size_t>(f)].first);
+    materials->SetTypedComponent(f, 1, sides[static_cast<std::size_t>(f)].second);
+  }
+  output->GetCellData()->AddArray(materials);
+}
+
+} // namespace labelmesher

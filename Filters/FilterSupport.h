@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef FilterSupport_h
+#define FilterSupport_h
+
+/**
+ * @file FilterSupport.h
+ * Module-private plumbing the LabelMesher filters share, so that each
+ * RequestData only unpacks its inputs, calls the core and packs its outputs:
+ * the progress/abort bridge to the core's ProgressObserver, VTK cell arrays
+ * and points from the core's SimplexMesh, field-data arrays, the measured
+ * guarantees (Filters/Core/Checks) and the interface surface of port 1.
+ * Not installed.
+ */
+
+#include "LabelImageConversion.h"
+#include "Mesh/SimplexMesh.h"
+#include "Support/ProgressObserver.h"
+#include "Support/StageClock.h"
+
+#include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace labelmesher
+{
+
+/// A ProgressObserver that forwards the core's stage and fraction to
+/// `algorithm` (ProgressText, UpdateProgress mapped onto [start, start +
+/// share]) and asks the core to stop when AbortExecute is set.
+ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start = 0.0, double share = 1.0);
+
+/// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity.
+vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell);
+
+/// One-tuple double array `name` = value.
+void AddScalarField(vtkFieldData* fd, const char* name, double value);
+/// Array `name` of `values`, as ArrayT (vtkIntArray, vtkDoubleArray, vtkStringArray).
+template <typename ArrayT, typename T>
+void AddField(vtkFieldData* fd, const char* name, const std::vector<T>& values)
+{
+  vtkNew<ArrayT> array;
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  fd->AddArray(array);
+}
+/// StageName (string) and StageSeconds (double), one entry per stage.
+void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings);
+
+/// Measures `mesh` against `image` with the four checks (angles, conformity,
+/// distances, topology) and stores the figures under the names of
+/// LabelMesherArrayNames.h; calls `finished(check)` after each check and
+/// appends one "measure: <check>" timing per check to `timings`.
+void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh,
+  std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished);
+
+/// Port 0: `mesh` (index space) in physical space, tetrahedra or triangles,
+/// cell data Material (active scalars). Tetrahedra stay positively oriented
+/// when the placement reverses orientation.
+void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output);
+
+/// Port 1: interface faces (triangles, or segments in 2D) in physical space,
+/// cell data Materials (the labels on either side).
+void PackInterfaces(const SimplexMesh& faces, const std::vector<std::pair<std::int32_t, std::int32_t>>& sides,
+  const ImagePlacement& placement, vtkPolyData* output);
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef LabelMesherArrayNames_h
+#define LabelMesherArrayNames_h
+
+/**
+ * @file LabelMesherArrayNames.h
+ * The names of the arrays the LabelMesher filters write (cell data and field
+ * data), in one place: the filters write them and the labelmesher CLI reads
+ * them through these constants, so a renamed array cannot silently drop out
+ * of a report. Pipelines may use them too (GetFieldData()->GetArray(...)).
+ *
+ * Field data holds one-tuple arrays for parameters and totals, and
+ * equal-length arrays for per-material tables (TopologyMaterial with the
+ * Image/Mesh columns; AccuracyMaterial with the pixel columns).
+ */
+
+namespace labelmesher
+{
+namespace arrays
+{
+// ---- cell data ----
+inline constexpr char Material[] = "Material";   ///< int, the image label of a cell
+inline constexpr char Materials[] = "Materials"; ///< int x 2, labels on either side of an interface face
+inline constexpr char MinimumJacobian[] = "MinimumJacobian";
+inline constexpr char ScaledJacobian[] = "ScaledJacobian";
+inline constexpr char Valid[] = "Valid";
+
+// ---- field data: parameters and run ----
+inline constexpr char ImageToMeshDistance[] = "ImageToMeshDistance";
+inline constexpr char MeshToImageDistance[] = "MeshToImageDistance";
+inline constexpr char IncludeBackground[] = "IncludeBackground";
+inline constexpr char VoxelSize[] = "VoxelSize";
+inline constexpr char NumberOfLeaves[] = "NumberOfLeaves";
+inline constexpr char StageName[] = "StageName";
+inline constexpr char StageSeconds[] = "StageSeconds";
+
+// ---- field data: measured output (Filters/Core/Checks) ----
+inline constexpr char MinimumAngle[] = "MinimumAngle";
+inline constexpr char MaximumAngle[] = "MaximumAngle";
+inline constexpr char InvertedCells[] = "InvertedCells";
+inline constexpr char OverSharedFaces[] = "OverSharedFaces";
+inline constexpr char HangingVertices[] = "HangingVertices";
+inline constexpr char NonManifoldBoundaryEdges[] = "NonManifoldBoundaryEdges";
+inline constexpr char MeasuredImageToMeshDistance[] = "MeasuredImageToMeshDistance";
+inline constexpr char MeasuredMeshToImageDistance[] = "MeasuredMeshToImageDistance";
+inline constexpr char TopologyMaterial[] = "TopologyMaterial";
+inline constexpr char ImageComponents[] = "ImageComponents";
+inline constexpr char ImageEulerCharacteristic[] = "ImageEulerCharacteristic";
+inline constexpr char MeshComponents[] = "MeshComponents";
+inline constexpr char MeshEulerCharacteristic[] = "MeshEulerCharacteristic";
+inline constexpr char TopologyMatches[] = "TopologyMatches";
+
+// ---- field data: vtkBezierCurver ----
+inline constexpr char Smoothness[] = "Smoothness";
+inline constexpr char Tension[] = "Tension";
+inline constexpr char MaximumUntanglingSteps[] = "MaximumUntanglingSteps";
+inline constexpr char QualityIterations[] = "QualityIterations";
+inline constexpr char InvalidBeforeUntangling[] = "InvalidBeforeUntangling";
+inline constexpr char InvalidCells[] = "InvalidCells";
+inline constexpr char UntanglingSteps[] = "UntanglingSteps";
+inline constexpr char InterfaceChains[] = "InterfaceChains";
+inline constexpr char ClosedInterfaceChains[] = "ClosedInterfaceChains";
+inline constexpr char CurvedEdges[] = "CurvedEdges";
+inline constexpr char SplitEars[] = "SplitEars";
+inline constexpr char Pixels[] = "Pixels";
+inline constexpr char MisclassifiedPixelsLinear[] = "MisclassifiedPixelsLinear";
+inline constexpr char MisclassifiedPixelsCurved[] = "MisclassifiedPixelsCurved";
+inline constexpr char AccuracyMaterial[] = "AccuracyMaterial";
+inline constexpr char MissedPixelsLinear[] = "MissedPixelsLinear";
+inline constexpr char MissedPixelsCurved[] = "MissedPixelsCurved";
+inline constexpr char ClaimedPixelsLinear[] = "ClaimedPixelsLinear";
+inline constexpr char ClaimedPixelsCurved[] = "ClaimedPixelsCurved";
+} // namespace arrays
+} // namespace labelmesher
+
+#endif

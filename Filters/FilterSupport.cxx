@@ -9,9 +9,12 @@
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -30,6 +33,20 @@ ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start, double s
     return !algorithm->GetAbortExecute();
   };
   return observer;
+}
+
+void RequestWholeImages(vtkInformationVector* port)
+{
+  for (int c = 0; c < port->GetNumberOfInformationObjects(); ++c)
+  {
+    vtkInformation* info = port->GetInformationObject(c);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    {
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+        info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      info->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+    }
+  }
 }
 
 vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell)

@@ -29,6 +29,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkInformationVector;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
@@ -39,6 +40,10 @@ namespace labelmesher
 /// `algorithm` (ProgressText, UpdateProgress mapped onto [start, start +
 /// share]) and asks the core to stop when AbortExecute is set.
 ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start = 0.0, double share = 1.0);
+
+/// Asks for the whole extent of every image on `port`'s connections: the
+/// filters mesh whole label images, whatever piece or extent downstream asks for.
+void RequestWholeImages(vtkInformationVector* port);
 
 /// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity.
 vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell);

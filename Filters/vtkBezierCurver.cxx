@@ -304,6 +304,18 @@ int vtkBezierCurver::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+int vtkBezierCurver::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  labelmesher::RequestWholeImages(inputVector[1]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkBezierCurver::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

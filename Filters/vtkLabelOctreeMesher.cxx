@@ -65,6 +65,18 @@ int vtkLabelOctreeMesher::FillOutputPortInformation(int port, vtkInformation* in
 }
 
 //------------------------------------------------------------------------------
+int vtkLabelOctreeMesher::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  labelmesher::RequestWholeImages(inputVector[0]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkLabelOctreeMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

@@ -168,6 +168,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// Pass 3 of RequestData: the parameters and octree size in the field data.
   void AddParameters(vtkFieldData* fd, double voxelSize, std::size_t leaves) const;

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The VTK adapter vtkBezierCurver (Filters/vtkBezierCurver.h) behind
+// vtkLabelOctreeMesher, as a C++ pipeline uses it: ports, the cubic Bézier
+// cells and their arrays, the field data (parameters, counts, pixel accuracy,
+// timings), errors for bad input and abort. The core function has its own
+// tests (TestBezierCurver.cxx); these test the plumbing around it.
+
+#include "FilterTestSupport.h"
+
+#include "LabelMesherArrayNames.h"
+#include "vtkBezierCurver.h"
+#include "vtkLabelOctreeMesher.h"
+
+#include "vtkCellData.h"
+#include "vtkCellTypes.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+namespace arrays = labelmesher::arrays;
+using namespace labelmesher::testing;
+
+namespace
+{
+
+double FieldValue(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(0, 0) : -1.0;
+}
+
+} // namespace
+
+TEST(vtkBezierCurver, CurvesTheMesherOutputIntoValidCubicTrianglesWithItsArrays)
+{
+  auto image = MakeVtkImage(MakeDiscSliceXZ(32, 11.3), { 0.5, 0.5, 0.5 }, { 1, 2, 3 });
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  vtkNew<vtkBezierCurver> curver;
+  EXPECT_EQ(curver->GetNumberOfInputPorts(), 2);
+  EXPECT_EQ(curver->GetNumberOfOutputPorts(), 1);
+  EXPECT_STREQ(
+    curver->GetInputPortInformation(0)->Get(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE()), "vtkUnstructuredGrid");
+  EXPECT_EQ(curver->GetInputPortInformation(1)->Get(vtkAlgorithm::INPUT_IS_OPTIONAL()), 1);
+  curver->SetInputConnection(0, mesher->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  curver->SetSmoothness(1);
+  curver->SetTension(0.25);
+  MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+  curver->Update();
+  EXPECT_TRUE(errors.Messages.empty());
+
+  vtkUnstructuredGrid* curved = curver->GetOutput();
+  const vtkIdType linearCells = mesher->GetOutput()->GetNumberOfCells();
+  ASSERT_GE(curved->GetNumberOfCells(), linearCells); // ears are split, never merged
+  vtkNew<vtkCellTypes> types;
+  curved->GetCellTypes(types);
+  ASSERT_EQ(types->GetNumberOfTypes(), 1);
+  EXPECT_EQ(types->GetCellType(0), VTK_BEZIER_TRIANGLE);
+  EXPECT_EQ(curved->GetCell(0)->GetNumberOfPoints(), 10);
+  double bounds[6];
+  curved->GetBounds(bounds);
+  EXPECT_EQ(bounds[2], 2.0); // stays in the image's plane y = 2
+  EXPECT_EQ(bounds[3], 2.0);
+
+  vtkDataArray* material = curved->GetCellData()->GetScalars();
+  ASSERT_NE(material, nullptr);
+  EXPECT_STREQ(material->GetName(), arrays::Material);
+  vtkDataArray* lower = curved->GetCellData()->GetArray(arrays::MinimumJacobian);
+  vtkDataArray* scaled = curved->GetCellData()->GetArray(arrays::ScaledJacobian);
+  vtkDataArray* valid = curved->GetCellData()->GetArray(arrays::Valid);
+  ASSERT_TRUE(lower && scaled && valid);
+  for (vtkIdType c = 0; c < curved->GetNumberOfCells(); ++c)
+  {
+    EXPECT_GT(lower->GetComponent(c, 0), 0.0);
+    EXPECT_GT(scaled->GetComponent(c, 0), 0.0);
+    EXPECT_LE(scaled->GetComponent(c, 0), 1.0 + 1e-12);
+    EXPECT_EQ(valid->GetComponent(c, 0), 1.0);
+  }
+
+  EXPECT_EQ(FieldValue(curved, arrays::Smoothness), 1.0);
+  EXPECT_EQ(FieldValue(curved, arrays::Tension), 0.25);
+  EXPECT_EQ(FieldValue(curved, arrays::InvalidCells), 0.0);
+  EXPECT_EQ(FieldValue(curved, arrays::InterfaceChains), 1.0); // one closed circle
+  EXPECT_EQ(FieldValue(curved, arrays::ClosedInterfaceChains), 1.0);
+  EXPECT_GT(FieldValue(curved, arrays::CurvedEdges), 0.0);
+  EXPECT_EQ(FieldValue(curved, arrays::Pixels), 32.0 * 32.0);
+  EXPECT_GE(FieldValue(curved, arrays::MisclassifiedPixelsLinear), 0.0);
+  EXPECT_GE(FieldValue(curved, arrays::MisclassifiedPixelsCurved), 0.0);
+  auto* names = vtkStringArray::SafeDownCast(curved->GetFieldData()->GetAbstractArray(arrays::StageName));
+  ASSERT_NE(names, nullptr);
+  EXPECT_EQ(names->GetValue(names->GetNumberOfValues() - 1), "pixel accuracy");
+}
+
+TEST(vtkBezierCurver, BadInputIsOneErrorAndAnEmptyOutput)
+{
+  // Tetrahedra instead of triangles.
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    mesher->SetInputData(MakeVtkImage(MakeBallLabels(8, 2.5)));
+    vtkNew<vtkBezierCurver> curver;
+    curver->SetInputConnection(mesher->GetOutputPort(0));
+    MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+    curver->Update();
+    EXPECT_EQ(curver->GetOutput()->GetNumberOfCells(), 0);
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("axis plane"), std::string::npos) << errors.Messages[0];
+  }
+  // No Material array.
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    mesher->SetInputData(MakeVtkImage(MakeDiscSliceXZ(12, 4.0)));
+    mesher->Update();
+    vtkNew<vtkUnstructuredGrid> bare;
+    bare->ShallowCopy(mesher->GetOutput());
+    bare->GetCellData()->RemoveArray(arrays::Material);
+    vtkNew<vtkBezierCurver> curver;
+    curver->SetInputData(bare);
+    MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+    curver->Update();
+    EXPECT_EQ(curver->GetOutput()->GetNumberOfCells(), 0);
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("Material"), std::string::npos) << errors.Messages[0];
+  }
+  // A 3D image on port 1.
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    mesher->SetInputData(MakeVtkImage(MakeDiscSliceXZ(12, 4.0)));
+    vtkNew<vtkBezierCurver> curver;
+    curver->SetInputConnection(mesher->GetOutputPort(0));
+    curver->SetInputDataObject(1, MakeVtkImage(MakeBallLabels(6, 2.0)));
+    MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+    curver->Update();
+    EXPECT_EQ(curver->GetOutput()->GetNumberOfCells(), 0);
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("3D"), std::string::npos) << errors.Messages[0];
+  }
+}
+
+TEST(vtkBezierCurver, AbortStopsTheRunWithAnEmptyOutputAndAWarning)
+{
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(MakeVtkImage(MakeDiscSliceXZ(48, 17.0)));
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(mesher->GetOutputPort(0));
+  AbortAtStage abort(curver, "");
+  MessageRecorder warnings(curver, vtkCommand::WarningEvent);
+  curver->Update();
+  EXPECT_TRUE(abort.Reached);
+  EXPECT_EQ(curver->GetOutput()->GetNumberOfCells(), 0);
+  ASSERT_EQ(warnings.Messages.size(), 1u);
+  EXPECT_NE(warnings.Messages[0].find("aborted"), std::string::npos);
+}

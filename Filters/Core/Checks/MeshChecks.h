@@ -14,6 +14,11 @@
  * as label 0). The *mesh boundary* of material m is the set of cell faces (edges
  * in 2D) between a cell of material m and a cell of another material or no cell.
  * Overall boundaries are the unions over all non-zero materials.
+ *
+ * Independence: the checks re-measure what the mesher decided, so on purpose
+ * they share no code with its own fidelity test (Criteria/DistanceBound.h)
+ * beyond the point distances of Support/Geometry.h: neither calls the other,
+ * and a bug in one cannot hide in the other.
  */
 
 #include "Support/LabelImage.h"

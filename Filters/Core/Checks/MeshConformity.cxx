@@ -10,11 +10,11 @@
  *     from their smallest vertex (MeshIncidence.h): count the facets used by
  *     more than two cells; keep the facets used by one cell (the mesh
  *     boundary); look for hanging vertices on every edge and, in 3D, every
- *     triangle: a uniform grid of the points (about one point per grid cell)
- *     gives the points near its bounding box, flagged if within Tolerance of
- *     it but farther than Tolerance from its vertices and, for triangles, from
- *     its edges (so "strictly inside"). Nothing relies on the points lying on
- *     a lattice.
+ *     triangle: a uniform grid of the points (ShapeGrid.h, about one point
+ *     per cell) gives the points near its bounding box, flagged if within
+ *     Tolerance of it but farther than Tolerance from its vertices and, for
+ *     triangles, from its edges (so "strictly inside"). Nothing relies on the
+ *     points lying on a lattice.
  *  2. watertightness: sort the edges (3D) / vertices (2D) of the boundary
  *     facets and count those not used by exactly two boundary facets.
  */
@@ -23,11 +23,11 @@
 
 #include "Support/Geometry.h"
 #include "Checks/MeshIncidence.h"
+#include "Checks/ShapeGrid.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <limits>
 #include <memory>
 
 namespace labelmesher
@@ -39,116 +39,6 @@ using namespace geometry;
 using checks_detail::VertexIncidence;
 
 constexpr double Tolerance = 1e-9;
-
-/// Uniform grid of point ids (counting sort into cells).
-class PointGrid
-{
-public:
-  explicit PointGrid(const std::vector<Point3>& points)
-    : Points(points)
-  {
-    Lo = { 0, 0, 0 };
-    Point3 hi = { 0, 0, 0 };
-    if (!points.empty())
-    {
-      Lo = hi = points[0];
-      for (const Point3& p : points)
-        for (int a = 0; a < 3; ++a)
-        {
-          Lo[a] = std::min(Lo[a], p[a]);
-          hi[a] = std::max(hi[a], p[a]);
-        }
-    }
-    // Cell size: about one point per cell over the occupied extent.
-    double volume = 1.0;
-    int dims = 0;
-    double ext[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      ext[a] = hi[a] - Lo[a];
-      if (ext[a] > 0)
-      {
-        volume *= ext[a];
-        ++dims;
-      }
-    }
-    Size = 1.0;
-    if (dims > 0 && !points.empty())
-      Size = std::pow(volume / static_cast<double>(points.size()), 1.0 / dims);
-    if (!(Size > 0) || !std::isfinite(Size))
-      Size = 1.0;
-    for (int a = 0; a < 3; ++a)
-      N[a] = std::max(1, std::min(1 << 20, static_cast<int>(ext[a] / Size) + 1));
-    const std::size_t ncells = static_cast<std::size_t>(N[0]) * N[1] * N[2];
-    Start.assign(ncells + 1, 0);
-    for (const Point3& p : points)
-      ++Start[CellOf(p) + 1];
-    for (std::size_t i = 0; i < ncells; ++i)
-      Start[i + 1] += Start[i];
-    Items.resize(points.size());
-    std::vector<std::size_t> fill(Start.begin(), Start.end() - 1);
-    for (std::size_t i = 0; i < points.size(); ++i)
-      Items[fill[CellOf(points[i])]++] = static_cast<std::int64_t>(i);
-  }
-
-  int Coord(double x, int a) const
-  {
-    const double t = std::floor((x - Lo[a]) / Size);
-    if (!(t > 0))
-      return 0;
-    return t >= N[a] - 1 ? N[a] - 1 : static_cast<int>(t);
-  }
-  std::size_t CellOf(const Point3& p) const
-  {
-    return (static_cast<std::size_t>(Coord(p[2], 2)) * N[1] + Coord(p[1], 1)) * N[0] + Coord(p[0], 0);
-  }
-
-  /// Calls f(pointId) for the points in the grid cells overlapping [lo, hi];
-  /// stops early when f returns false for the "skip this cell" predicate.
-  template <class CellFilter, class F>
-  void ForEachInBox(const Point3& lo, const Point3& hi, CellFilter&& keepCell, F&& f) const
-  {
-    int a0[3], a1[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      a0[a] = Coord(lo[a], a);
-      a1[a] = Coord(hi[a], a);
-    }
-    for (int k = a0[2]; k <= a1[2]; ++k)
-      for (int j = a0[1]; j <= a1[1]; ++j)
-        for (int i = a0[0]; i <= a1[0]; ++i)
-        {
-          const std::size_t cell = (static_cast<std::size_t>(k) * N[1] + j) * N[0] + i;
-          if (Start[cell] == Start[cell + 1])
-            continue;
-          if (!keepCell(i, j, k))
-            continue;
-          for (std::size_t q = Start[cell]; q < Start[cell + 1]; ++q)
-            f(Items[q]);
-        }
-  }
-
-  /// Box of grid cell (i, j, k), used to skip cells far from a triangle's plane.
-  void CellBox(int i, int j, int k, Point3& lo, Point3& hi) const
-  {
-    const int c[3] = { i, j, k };
-    for (int a = 0; a < 3; ++a)
-    {
-      // First and last cells are unbounded (points beyond are clamped into them).
-      lo[a] = c[a] == 0 ? -std::numeric_limits<double>::infinity() : Lo[a] + c[a] * Size;
-      hi[a] = c[a] == N[a] - 1 ? std::numeric_limits<double>::infinity() : Lo[a] + (c[a] + 1) * Size;
-    }
-  }
-
-private:
-  const std::vector<Point3>& Points;
-  Point3 Lo;
-  double Size = 1.0;
-  int N[3] = { 1, 1, 1 };
-  std::vector<std::size_t> Start;
-  std::vector<std::int64_t> Items;
-};
-
 } // namespace
 
 ConformityReport MeasureConformity(const SimplexMesh& mesh)
@@ -159,7 +49,8 @@ ConformityReport MeasureConformity(const SimplexMesh& mesh)
   const bool is3D = mesh.Dimension == 3;
   if (P.empty())
     return report;
-  const PointGrid grid(P);
+  const checks_detail::ShapeGrid grid(P.size(), checks_detail::GridCells::OnePerItem,
+    [&](std::size_t i, Point3& lo, Point3& hi) { lo = hi = P[i]; });
   std::unique_ptr<std::atomic<std::uint8_t>[]> hanging(new std::atomic<std::uint8_t>[P.size()]);
   for (std::size_t v = 0; v < P.size(); ++v)
     hanging[v].store(0, std::memory_order_relaxed);

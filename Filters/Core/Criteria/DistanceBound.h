@@ -17,6 +17,11 @@
  * axis-aligned plane (line) that coplanar pieces cover exactly are at distance
  * 0 (the case h = 0 needs this). What cannot be decided within the subdivision
  * depth counts as a violation: the answer errs only towards refining.
+ *
+ * Kept apart on purpose from the Hausdorff measure of the checks
+ * (Checks/MeshChecks.h), which re-measures the finished mesh: neither calls
+ * the other and they share only the point distances of Support/Geometry.h,
+ * so that a bug in one cannot hide in the other.
  */
 
 #include "Mesh/SimplexMesh.h"

@@ -24,6 +24,7 @@
  */
 
 #include "Checks/MeshChecks.h"
+#include "Support/UnionFind.h"
 
 #include "Checks/MeshIncidence.h"
 
@@ -42,41 +43,6 @@ struct Counts
   long long V = 0, E = 0, F = 0, C = 0;
 };
 
-class UnionFind
-{
-public:
-  std::int64_t Add()
-  {
-    Parent.push_back(static_cast<std::int64_t>(Parent.size()));
-    return Parent.back();
-  }
-  void Resize(std::size_t n)
-  {
-    Parent.resize(n);
-    std::iota(Parent.begin(), Parent.end(), std::int64_t(0));
-  }
-  std::int64_t Find(std::int64_t x)
-  {
-    while (Parent[x] != x)
-    {
-      Parent[x] = Parent[Parent[x]];
-      x = Parent[x];
-    }
-    return x;
-  }
-  std::int64_t Union(std::int64_t a, std::int64_t b)
-  {
-    a = Find(a);
-    b = Find(b);
-    if (a == b)
-      return a;
-    if (a < b)
-      std::swap(a, b);
-    Parent[a] = b; // smaller root wins: deterministic
-    return b;
-  }
-  std::vector<std::int64_t> Parent;
-};
 
 /// Distinct non-zero values among v[0..n): calls f(value) once for each.
 template <class F>
@@ -231,7 +197,8 @@ void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyCompa
         auto join = [&](std::int64_t other) {
           if (other < 0 || materialOf[other] != m)
             return;
-          id = id < 0 ? uf.Find(other) : uf.Union(id, other);
+          id = static_cast<std::int64_t>(id < 0 ? uf.Find(static_cast<std::size_t>(other))
+                                                : uf.Unite(static_cast<std::size_t>(id), static_cast<std::size_t>(other)));
         };
         join(cur[s - 1]);
         join(cur[s - px - 1]);
@@ -243,7 +210,7 @@ void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyCompa
               join(prev[s + dj * px + di]);
         if (id < 0)
         {
-          id = uf.Add();
+          id = static_cast<std::int64_t>(uf.Add());
           materialOf.push_back(m);
         }
         cur[s] = id;
@@ -252,7 +219,7 @@ void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyCompa
   }
   std::vector<std::size_t> components(M, 0);
   for (std::size_t id = 0; id < materialOf.size(); ++id)
-    if (uf.Find(static_cast<std::int64_t>(id)) == static_cast<std::int64_t>(id))
+    if (uf.IsRoot(id))
       ++components[materialOf[id]];
 
   for (std::size_t m = 1; m < M; ++m)
@@ -285,7 +252,7 @@ void MeshTopology(const SimplexMesh& mesh, std::map<std::int32_t, TopologyCompar
   const checks_detail::VertexIncidence inc = checks_detail::BuildVertexIncidence(mesh);
   const int nv = mesh.VerticesPerCell();
   UnionFind uf;
-  uf.Resize(nc);
+  uf.Reset(nc);
   std::vector<std::uint32_t> local;
   std::vector<std::int64_t> edges;
   std::vector<std::pair<std::int64_t, std::int64_t>> faces;
@@ -306,7 +273,7 @@ void MeshTopology(const SimplexMesh& mesh, std::map<std::int32_t, TopologyCompar
       {
         const std::uint32_t c = local[h];
         if (h > g)
-          uf.Union(local[g], c);
+          uf.Unite(local[g], c);
         const std::int64_t* cv = mesh.Cell(c);
         std::int64_t greater[3];
         int n = 0;
@@ -335,7 +302,7 @@ void MeshTopology(const SimplexMesh& mesh, std::map<std::int32_t, TopologyCompar
   }
   std::vector<std::size_t> components(M, 0);
   for (std::size_t c = 0; c < nc; ++c)
-    if (uf.Find(static_cast<std::int64_t>(c)) == static_cast<std::int64_t>(c))
+    if (uf.IsRoot(c))
       ++components[cellMaterial[c]];
   for (std::size_t m = 0; m < M; ++m)
   {

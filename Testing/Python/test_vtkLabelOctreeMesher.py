@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Drives the wrapped vtkLabelOctreeMesher from Python, as a ParaView/Slicer user
 would, and checks the properties the filter promises on small synthetic images:
-labelled tetrahedra with a bounded dihedral angle, no background cells by
-default, points in physical coordinates (origin, spacing, direction honoured),
-triangles in the image plane for single-slice images, and clean errors.
+labelled tetrahedra with the proven angle bounds (30 degrees dihedral, 45 degrees
+planar in 2D), no background cells by default, points in physical coordinates
+(origin, spacing, direction honoured), triangles in the image plane for
+single-slice images, and clean errors.
 
 Run with PYTHONPATH=<build>/lib/python3/dist-packages (ctest sets it)."""
 
-import math
 import unittest
 
 import numpy as np
@@ -18,8 +18,10 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import labelmesher
 
-# asin(1/3): the dihedral-angle bound of the ORD initial mesh (dissertation 3.2.1).
-ANGLE_BOUND = math.degrees(math.asin(1.0 / 3.0))  # 19.47 degrees
+# The angle bounds the initial mesh is proved to keep (TestAngleBoundEnumeration,
+# README "What it guarantees"): above the dissertation's asin(1/3) = 19.47 degrees.
+DIHEDRAL_BOUND = 30.0  # degrees, tetrahedra (3D)
+PLANAR_BOUND = 45.0  # degrees, triangles (2D)
 
 
 def make_image(labels, spacing=(1.0, 1.0, 1.0), origin=(0.0, 0.0, 0.0), direction=None,
@@ -128,9 +130,9 @@ class SphereTest(unittest.TestCase):
         self.assertEqual(len(values), self.grid.GetNumberOfCells())
         self.assertEqual(set(np.unique(values)), {1}, "background cells must be dropped by default")
 
-    def test_minimum_dihedral_angle_at_least_19_47_degrees(self):
+    def test_minimum_dihedral_angle_at_least_30_degrees(self):
         angles, volumes = dihedral_angles(self.points, self.tets)
-        self.assertGreaterEqual(angles.min(), ANGLE_BOUND - 1e-6)
+        self.assertGreaterEqual(angles.min(), DIHEDRAL_BOUND - 1e-6)
         self.assertTrue(np.all(volumes > 0), "tetrahedra must be positively oriented")
 
     def test_volume_and_centroid_in_physical_coordinates(self):
@@ -166,14 +168,18 @@ class SphereTest(unittest.TestCase):
         self.assertEqual(fd.GetArray("ImageToMeshDistance").GetValue(0), 2.0)
         self.assertEqual(fd.GetArray("MeshToImageDistance").GetValue(0), 2.0)
         self.assertEqual(fd.GetArray("VoxelSize").GetValue(0), 0.5)
-        if fd.GetArray("MinimumAngle") is not None:
-            angles, _ = dihedral_angles(self.points, self.tets)
-            self.assertAlmostEqual(fd.GetArray("MinimumAngle").GetValue(0), angles.min(), places=3)
-            # the measured two-sided distances respect the requested bounds
-            self.assertLessEqual(fd.GetArray("MeasuredImageToMeshDistance").GetValue(0), 2.0 + 1e-9)
-            self.assertLessEqual(fd.GetArray("MeasuredMeshToImageDistance").GetValue(0), 2.0 + 1e-9)
-            self.assertTrue(all(fd.GetArray("TopologyMatches").GetValue(i)
-                                for i in range(fd.GetArray("TopologyMatches").GetNumberOfTuples())))
+        # MeasureOutput is on by default: the measurements must be there.
+        for name in ("MinimumAngle", "MeasuredImageToMeshDistance", "MeasuredMeshToImageDistance",
+                     "TopologyMatches"):
+            self.assertIsNotNone(fd.GetArray(name), "field array %s is missing" % name)
+        angles, _ = dihedral_angles(self.points, self.tets)
+        self.assertAlmostEqual(fd.GetArray("MinimumAngle").GetValue(0), angles.min(), places=3)
+        self.assertGreaterEqual(fd.GetArray("MinimumAngle").GetValue(0), DIHEDRAL_BOUND - 1e-6)
+        # the measured two-sided distances respect the requested bounds
+        self.assertLessEqual(fd.GetArray("MeasuredImageToMeshDistance").GetValue(0), 2.0 + 1e-9)
+        self.assertLessEqual(fd.GetArray("MeasuredMeshToImageDistance").GetValue(0), 2.0 + 1e-9)
+        self.assertTrue(all(fd.GetArray("TopologyMatches").GetValue(i)
+                            for i in range(fd.GetArray("TopologyMatches").GetNumberOfTuples())))
 
 
 class OptionsTest(unittest.TestCase):
@@ -247,7 +253,7 @@ class OptionsTest(unittest.TestCase):
                 self.assertTrue(np.all(types == VTK_TRIANGLE))
                 points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
                 np.testing.assert_allclose(points[:, normal], origin[normal])
-                self.assertGreaterEqual(triangle_angles(points, tris).min(), ANGLE_BOUND - 1e-6)
+                self.assertGreaterEqual(triangle_angles(points, tris).min(), PLANAR_BOUND - 1e-6)
                 boundary = mesher.GetBoundaryOutput()
                 self.assertGreater(boundary.GetNumberOfLines(), 0)
 

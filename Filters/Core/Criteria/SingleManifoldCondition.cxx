@@ -246,10 +246,17 @@ bool EdgesAndFacesAreSimple(const BoundarySigns& sign, const LeafBox& leaf)
 bool InteriorIsOnePath(const LocalLabels& local, int s)
 {
   std::vector<unsigned char> layer(static_cast<std::size_t>(s) * s);
+  bool onRim[2] = { false, false };
   for (int j = 0; j < s; ++j)
     for (int i = 0; i < s; ++i)
+    {
       layer[j * s + i] = static_cast<unsigned char>(local(i, j, 0));
-  return FaceLayerIsOneArc(layer, s);
+      if (i == 0 || j == 0 || i == s - 1 || j == s - 1)
+        onRim[layer[j * s + i]] = true;
+    }
+  // A label that does not reach the leaf's rim is an island: its boundary is
+  // a closed loop, not a path.
+  return onRim[0] && onRim[1] && FaceLayerIsOneArc(layer, s);
 }
 
 /// 3D: the voxel faces between the labels inside the leaf form one disk.

@@ -23,9 +23,7 @@
 #include "LabelOctreeMesher.h"
 #include "Checks/MeshChecks.h"
 #include "SyntheticShapes.h"
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 #include "LabelImageFile.h"
-#endif
 
 #include <chrono>
 #include <cmath>
@@ -194,13 +192,9 @@ int main(int argc, char** argv)
     }
     else
     {
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
-      image = benchmarks::ReadLabelImageFile(file).Image;
+      image = testing::ReadLabelImageFile(file).Image;
       if (name.empty())
         name = std::filesystem::path(file).stem().string();
-#else
-      Usage("built without ITK: only --cassini N is available");
-#endif
     }
   }
   catch (const std::exception& e)

@@ -10,9 +10,7 @@
 #include "Mesh/MeshSelection.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 #include "LabelImageFile.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -102,13 +100,12 @@ void BenchmarkDisc(benchmark::State& state, int n)
   CurveAndReport(state, image, 1.0);
 }
 
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 void BenchmarkFile(benchmark::State& state, const std::string& path)
 {
   LabelImage image;
   try
   {
-    image = benchmarks::ReadLabelImageFile(path).Image;
+    image = testing::ReadLabelImageFile(path).Image;
   }
   catch (const std::exception& e)
   {
@@ -117,7 +114,6 @@ void BenchmarkFile(benchmark::State& state, const std::string& path)
   }
   CurveAndReport(state, image, 2.0);
 }
-#endif
 
 void BenchmarkRandomImages(benchmark::State& state, int count)
 {
@@ -155,8 +151,7 @@ void RegisterAll()
       ->Unit(benchmark::kMillisecond)
       ->Iterations(1)
       ->UseRealTime();
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
-  for (const std::string& path : benchmarks::ListNrrdFiles(DataDirectory() + "/2d"))
+  for (const std::string& path : testing::ListNrrdFiles(DataDirectory() + "/2d"))
   {
     const std::string name = path.substr(path.find_last_of('/') + 1);
     benchmark::RegisterBenchmark(("CurveMesh/File/" + name.substr(0, name.rfind('.'))).c_str(),
@@ -165,7 +160,6 @@ void RegisterAll()
       ->Iterations(1)
       ->UseRealTime();
   }
-#endif
   benchmark::RegisterBenchmark("CurveMesh/RandomImages2D/100",
     [](benchmark::State& state) { BenchmarkRandomImages(state, 100); })
     ->Unit(benchmark::kMillisecond)

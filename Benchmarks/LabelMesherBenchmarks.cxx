@@ -7,9 +7,7 @@
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 #include "LabelImageFile.h"
-#endif
 
 #include <benchmark/benchmark.h>
 
@@ -145,14 +143,13 @@ void BenchmarkCassini(benchmark::State& state, int n)
   MeshAndReport(state, image);
 }
 
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
 void BenchmarkFile(benchmark::State& state, const std::string& path)
 {
   // Read outside the timed loop: I/O is not part of the figure.
   LabelImage image;
   try
   {
-    image = benchmarks::ReadLabelImageFile(path).Image;
+    image = testing::ReadLabelImageFile(path).Image;
   }
   catch (const std::exception& e)
   {
@@ -161,7 +158,6 @@ void BenchmarkFile(benchmark::State& state, const std::string& path)
   }
   MeshAndReport(state, image);
 }
-#endif
 
 /// Meshes `count` random property-test images per iteration (seeds 0..count-1).
 void BenchmarkRandomImages(benchmark::State& state, int dimension, int count)
@@ -217,8 +213,7 @@ void RegisterAll()
       ->Iterations(1)
       ->UseRealTime();
 
-#ifdef LABELMESHER_BENCHMARKS_HAVE_ITK
-  for (const std::string& path : benchmarks::ListNrrdFiles(DataDirectory() + "/3d"))
+  for (const std::string& path : testing::ListNrrdFiles(DataDirectory() + "/3d"))
   {
     const std::string name = std::filesystem::path(path).stem().string();
     benchmark::RegisterBenchmark(("MeshLabelImage/File/" + name).c_str(),
@@ -227,7 +222,6 @@ void RegisterAll()
       ->Iterations(1)
       ->UseRealTime();
   }
-#endif
 
   for (int dimension : { 2, 3 })
     benchmark::RegisterBenchmark(("MeshLabelImage/RandomImages" + std::to_string(dimension) + "D/100").c_str(),

@@ -10,7 +10,7 @@
 
 namespace labelmesher
 {
-namespace benchmarks
+namespace testing
 {
 
 LabelImageFile ReadLabelImageFile(const std::string& path)
@@ -57,5 +57,5 @@ std::vector<std::string> ListNrrdFiles(const std::string& directory)
   return files;
 }
 
-} // namespace benchmarks
+} // namespace testing
 } // namespace labelmesher

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_benchmarks_LabelImageFile_h
-#define labelmesher_benchmarks_LabelImageFile_h
+#ifndef labelmesher_testing_LabelImageFile_h
+#define labelmesher_testing_LabelImageFile_h
 
 /**
  * @file LabelImageFile.h
- * Benchmark-side input: reads a 3D label image (NRRD, NIfTI, MetaImage) with
+ * Test- and benchmark-side input: reads a 3D label image (NRRD, NIfTI, MetaImage) with
  * ITK (itk::ImageFileReader<itk::Image<int, 3>>; VTK 9.1 misreads gzip NRRD)
  * into the core's index-space LabelImage. Spacing is reported but not applied:
  * distances and h are in voxel units, as the core sees them. Kept out of the
@@ -19,7 +19,7 @@
 
 namespace labelmesher
 {
-namespace benchmarks
+namespace testing
 {
 
 struct LabelImageFile
@@ -35,7 +35,7 @@ LabelImageFile ReadLabelImageFile(const std::string& path);
 /// The *.nrrd files of `directory`, sorted by name (empty if it does not exist).
 std::vector<std::string> ListNrrdFiles(const std::string& directory);
 
-} // namespace benchmarks
+} // namespace testing
 } // namespace labelmesher
 
 #endif

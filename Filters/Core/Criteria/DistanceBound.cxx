@@ -13,6 +13,34 @@ namespace
 using namespace geometry;
 constexpr double kRoundOff = 1e-9;
 
+/// A parallelogram whose corners, in order, are those of an axis-aligned
+/// rectangle [lo, hi] (flat along one axis), as voxel faces are.
+bool IsAxisRectangle(const ConvexPiece& piece, Point3& lo, Point3& hi)
+{
+  const Point3* q = piece.Points;
+  int flat = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::min(q[0][a], q[2][a]);
+    hi[a] = std::max(q[0][a], q[2][a]);
+    flat += lo[a] == hi[a];
+    // Every corner takes the low or high value; q1, q3 are the other diagonal.
+    for (int i = 1; i < 4; i += 2)
+      if (q[i][a] != lo[a] && q[i][a] != hi[a])
+        return false;
+    if (q[1][a] + q[3][a] != lo[a] + hi[a])
+      return false;
+  }
+  // q1 is a corner next to both q0 and q2 (not a repeat of either).
+  int fromQ0 = 0, fromQ2 = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    fromQ0 += q[1][a] != q[0][a];
+    fromQ2 += q[1][a] != q[2][a];
+  }
+  return flat == 1 && fromQ0 == 1 && fromQ2 == 1;
+}
+
 double DistanceTo(const Point3& p, const ConvexPiece& piece)
 {
   double d2 = 0.0;
@@ -25,8 +53,16 @@ double DistanceTo(const Point3& p, const ConvexPiece& piece)
       d2 = SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]);
       break;
     default:
-      d2 = std::min(SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]),
-        SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[2], piece.Points[3]));
+    {
+      // Voxel faces are axis-aligned rectangles: then the distance to their
+      // box (flat along one axis) is the distance, at a tenth of the cost.
+      Point3 lo, hi;
+      if (IsAxisRectangle(piece, lo, hi))
+        d2 = SquaredDistanceToBox(p, lo, hi);
+      else
+        d2 = std::min(SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]),
+          SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[2], piece.Points[3]));
+    }
   }
   return std::sqrt(d2);
 }
@@ -175,8 +211,63 @@ std::vector<ConvexPiece> Subdivide(const ConvexPiece& e)
   }
 }
 
-bool Within(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h, int depth)
+/// The pieces that can matter for `element`: those within h of some point of
+/// it, hence within h + rho of its vertex centroid c (rho: the farthest vertex
+/// from c), nearest to c first. A generous margin keeps every piece round-off
+/// could make matter, so the verdict is the one the whole list gives, only
+/// cheaper to reach.
+void Cull(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h, std::vector<ConvexPiece>& out)
 {
+  Point3 c{ 0.0, 0.0, 0.0 };
+  for (int i = 0; i < element.Count; ++i)
+    c = Add(c, element.Points[i]);
+  c = Scale(c, 1.0 / element.Count);
+  double rho = 0.0;
+  for (int i = 0; i < element.Count; ++i)
+    rho = std::max(rho, Distance(c, element.Points[i]));
+  const double reach = h + rho + 1e-6;
+  std::vector<std::pair<double, std::size_t>> near;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    const double d = DistanceTo(c, pieces[p]);
+    if (d <= reach)
+      near.emplace_back(d, p);
+  }
+  std::sort(near.begin(), near.end());
+  out.clear();
+  for (const auto& entry : near)
+    out.push_back(pieces[entry.second]);
+}
+
+/// One piece within h of every vertex: then of the whole element (the
+/// distance to a convex piece is convex).
+bool OnePieceCovers(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h)
+{
+  for (const ConvexPiece& piece : pieces)
+  {
+    double farthest = 0.0;
+    for (int i = 0; i < element.Count && farthest <= h + kRoundOff; ++i)
+      farthest = std::max(farthest, DistanceTo(element.Points[i], piece));
+    if (farthest <= h + kRoundOff)
+      return true;
+  }
+  return false;
+}
+
+bool Within(const ConvexPiece& element, const std::vector<ConvexPiece>& allPieces, double h, int depth)
+{
+  // Most of the time is spent on elements among many far pieces (a large
+  // merged face, a large leaf): cull before looking closer, and try the
+  // nearest pieces first, which usually prove the element at once.
+  std::vector<ConvexPiece> culled;
+  const bool cull = allPieces.size() > 8;
+  if (cull)
+    Cull(element, allPieces, h, culled);
+  const std::vector<ConvexPiece>& pieces = cull ? culled : allPieces;
+  if (pieces.empty())
+    return false;
+  if (OnePieceCovers(element, pieces, h))
+    return true;
   double worstVertex = 0.0;
   for (int i = 0; i < element.Count; ++i)
   {
@@ -187,14 +278,6 @@ bool Within(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, 
   }
   if (worstVertex > h + kRoundOff)
     return false;
-  for (const ConvexPiece& piece : pieces)
-  {
-    double farthest = 0.0;
-    for (int i = 0; i < element.Count && farthest <= h + kRoundOff; ++i)
-      farthest = std::max(farthest, DistanceTo(element.Points[i], piece));
-    if (farthest <= h + kRoundOff)
-      return true;
-  }
   if (worstVertex < kRoundOff && (CoveredExactly(element, pieces) || CoveredExactlyOnLine(element, pieces)))
     return true;
   if (depth == 0)

@@ -96,6 +96,24 @@ TEST(MesherPropertiesRegression, SeedsThatOnceFailed)
     SCOPED_TRACE(c.What);
     CheckGuarantees(random);
   }
+  // Box images (GenerateRandomBoxImage, with their sizes).
+  const struct
+  {
+    std::uint64_t Seed;
+    int Dimension, Size;
+    std::uint64_t Checksum;
+    const char* What;
+  } boxes[] = {
+    { 2288, 2, 24, 0x8e1fa69094c53866ull,
+      "two leaves' polygons ran through a 0-corner of a third label's boundary and joined two blocks of a label" },
+  };
+  for (const auto& c : boxes)
+  {
+    const testing::RandomLabelImage random = testing::GenerateRandomBoxImage(c.Seed, c.Dimension, c.Size);
+    ASSERT_EQ(testing::LabelImageChecksum(random.Image), c.Checksum) << "box seed " << c.Seed << " names another image now";
+    SCOPED_TRACE(c.What);
+    CheckGuarantees(random);
+  }
 }
 
 class BoxImageProperties : public ::testing::TestWithParam<Shard>

@@ -433,6 +433,35 @@ TEST(SingleManifoldCondition, TwoDimensionalPathPlusLoopFails)
   EXPECT_TRUE(Manifold(filled, Square(2, 2, 8), 0, 1));
 }
 
+TEST(SingleManifoldCondition, ZeroCornerOfAThirdLabelsBoundaryFails)
+{
+  // Random box image 2288 (24^2, h = 2), pixels x 8..15, y 4..11: two blocks
+  // of label 4 two pixels apart, separated by label 1 and background. The
+  // leaves (10..11, 6..7) and (10..11, 8..9) hold labels 1 and 4, and share
+  // the corner (11.5, 7.5), a 0-point of the 1|0 boundary that no 4 touches.
+  // Their polygons ran through it, so the cells of 4 of both leaves met there
+  // and joined the two blocks into one component.
+  const LabelImage image = Picture({
+    "11444444",
+    "11444444",
+    "11444444",
+    "1111....",
+    "1111....",
+    "44444444",
+    "44444444",
+    "44444444",
+  });
+  EXPECT_FALSE(Manifold(image, Square(2, 2, 2), 1, 4));
+  EXPECT_FALSE(Manifold(image, Square(2, 4, 2), 1, 4));
+  // Without the background the corner is inside label 1, and the lower leaf
+  // is a plain crossing.
+  LabelImage filled = image;
+  for (int j = 3; j <= 4; ++j)
+    for (int i = 4; i < 8; ++i)
+      filled(i, j, 0) = 1;
+  EXPECT_TRUE(Manifold(filled, Square(2, 2, 2), 1, 4));
+}
+
 // A 2D leaf whose only interface is a closed loop around an island inside it
 // (no boundary on its sides): the sides are all of one label, the loop is
 // connected and both labels are 4-connected without a checkerboard, yet the

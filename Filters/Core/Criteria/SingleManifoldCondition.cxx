@@ -439,12 +439,44 @@ bool InterfaceIsConnected(const LabelImage& image, const LeafBox& leaf, std::int
   return true;
 }
 
+/// Every 0-corner of the leaf lies on the interface between the leaf's two
+/// labels: both are among the voxels around it. The intersection polygon runs
+/// through the leaf's 0-corners and stands for that interface; a 0-corner that
+/// only one of the two labels touches (with a third) lies on another piece of
+/// the boundary, and the patches of the leaves around it would join regions
+/// of a label there at a point (random box image 2288: two blocks of a label
+/// two pixels apart, each reaching a corner of the 1|0 boundary between them).
+bool ZeroCornersLieOnTheInterface(const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second)
+{
+  const bool flat = leaf.Dimension == 2;
+  for (int c = 0; c < (flat ? 4 : 8); ++c)
+  {
+    const int i = leaf.Origin[0] + ((c & 1) ? leaf.Size : 0);
+    const int j = leaf.Origin[1] + ((c & 2) ? leaf.Size : 0);
+    const int k = flat ? 0 : leaf.Origin[2] + ((c & 4) ? leaf.Size : 0);
+    if (LatticeLabel(image, i, j, k) != kOnBoundary)
+      continue;
+    bool hasFirst = false, hasSecond = false;
+    for (int v = 0; v < (flat ? 4 : 8); ++v)
+    {
+      const std::int32_t label = image.At(i - 1 + (v & 1), j - 1 + ((v >> 1) & 1), flat ? 0 : k - 1 + ((v >> 2) & 1));
+      hasFirst = hasFirst || label == first;
+      hasSecond = hasSecond || label == second;
+    }
+    if (!(hasFirst && hasSecond))
+      return false;
+  }
+  return true;
+}
+
 } // namespace
 
 bool SatisfiesSingleManifoldCondition(
   const LabelImage& image, const LeafBox& leaf, std::int32_t first, std::int32_t second)
 {
   if (first == second || leaf.Size < 2)
+    return false;
+  if (!ZeroCornersLieOnTheInterface(image, leaf, first, second))
     return false;
   if (!EdgesAndFacesAreSimple(BoundarySigns(image, leaf, first, second), leaf))
     return false;

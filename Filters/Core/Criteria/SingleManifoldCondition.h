@@ -11,6 +11,10 @@
  *
  *  - labels are read at lattice points (LatticeLabels.h: 0 where the image
  *    boundary passes), the same from both leaves of a face;
+ *  - every 0-corner of the leaf (a vertex of the intersection polygon) lies
+ *    on the interface between the leaf's two labels: both are among the
+ *    voxels around it (a corner of a third label's boundary would join two
+ *    regions of a label there);
  *  - along every leaf edge the image boundary is empty, or one run of points
  *    between or at the ends (this excludes the multiple crossings of
  *    Figure 9a);

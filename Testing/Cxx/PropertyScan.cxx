@@ -1,18 +1,22 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 //
-// labelmesher_property_scan: the property tests' assertions (MesherGuarantees.h)
-// over as many seeded random images as one asks for, outside ctest. The CI
-// suites run 3,400 images; the bugs they missed showed up at rates of 1 in
-// 3,000 to 1 in 10,000, so run this with tens of thousands before trusting a
-// change to the per-leaf tests. Prints every failing seed; exit status 1 if any.
+// labelmesher_property_scan: the property tests' assertions (MesherGuarantees.h,
+// DecimatorGuarantees.h) over as many seeded random images as one asks for,
+// outside ctest. The CI suites run a few thousand images; the bugs they missed
+// showed up at rates of 1 in 3,000 to 1 in 10,000, so run this with tens of
+// thousands before trusting a change to the mesher's per-leaf tests or the
+// decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]
 //
+// --decimate: mesher then decimator, with the angle drawn per seed
+// (DrawDecimationParameters); the decimated mesh must keep every guarantee.
 // smooth: GenerateRandomLabelImageWithDescription(seed, dimension) (the images
 // of TestMesherProperties' MesherProperties suites); boxes:
 // GenerateRandomBoxImage(seed, dimension, SIZE) (default 24 in 2D, 14 in 3D).
 // Distance bounds: DrawDistanceBounds(seed), as in the tests.
 
+#include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
 
@@ -25,9 +29,15 @@ using namespace labelmesher;
 
 int main(int argc, char** argv)
 {
+  const bool decimate = argc > 1 && std::string(argv[1]) == "--decimate";
+  if (decimate)
+  {
+    ++argv;
+    --argc;
+  }
   if (argc < 5)
   {
-    std::fprintf(stderr, "usage: %s smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--decimate] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
@@ -40,26 +50,37 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bad arguments: family smooth or boxes, dimension 2 or 3, size >= 2\n");
     return 2;
   }
-  std::uint64_t failures = 0;
+  std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed)
   {
     const testing::RandomLabelImage random = family == "smooth"
       ? testing::GenerateRandomLabelImageWithDescription(seed, dimension)
       : testing::GenerateRandomBoxImage(seed, dimension, size);
     const MesherParameters parameters = testing::DrawDistanceBounds(seed);
-    const auto problems = testing::ViolatedMesherGuarantees(random.Image, parameters);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, parameters);
+    DecimationCounts counts;
+    const auto problems = decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
+                                   : testing::ViolatedMesherGuarantees(random.Image, parameters);
+    cellsBefore += counts.CellsBefore;
+    cellsAfter += counts.CellsAfter;
     if (problems.empty())
       continue;
     ++failures;
-    std::printf("seed %llu FAILS (h(I,M) <= %g, h(M,I) <= %g)\n", static_cast<unsigned long long>(seed),
+    std::printf("seed %llu FAILS (h(I,M) <= %g, h(M,I) <= %g", static_cast<unsigned long long>(seed),
       parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
+    if (decimate)
+      std::printf(", decimated at %g degrees", decimation.MinimumAngle);
+    std::printf(")\n");
     for (const auto& problem : problems)
       std::printf("  %s\n", problem.c_str());
     std::printf("%s", random.Describe().c_str());
     std::fflush(stdout);
   }
-  std::printf("%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n", family.c_str(), dimension,
-    static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
+  std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n", decimate ? "decimated " : "",
+    family.c_str(), dimension, static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
     static_cast<unsigned long long>(failures), static_cast<unsigned long long>(count));
+  if (decimate)
+    std::printf("cells (background included): %llu before, %llu after decimation\n",
+      static_cast<unsigned long long>(cellsBefore), static_cast<unsigned long long>(cellsAfter));
   return failures == 0 ? 0 : 1;
 }

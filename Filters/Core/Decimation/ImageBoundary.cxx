@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "Decimation/ImageBoundary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace labelmesher
+{
+
+ImageBoundary::ImageBoundary(const LabelImage& image)
+  : Dimension(image.Dimension())
+{
+  const auto& n = image.Dimensions;
+  if (static_cast<std::size_t>(n[0]) * n[1] * n[2] * 3 >= (std::size_t(1) << 32))
+    throw std::invalid_argument("the image is too large for the decimator's face index (2^32 voxel faces)");
+  // Faces between voxel (i, j, k) and its +axis neighbour, from i = -1 (the
+  // outside) to n - 1.
+  for (int axis = 0; axis < Dimension; ++axis)
+    for (int k = (axis == 2 ? -1 : 0); k < n[2]; ++k)
+      for (int j = (axis == 1 ? -1 : 0); j < n[1]; ++j)
+        for (int i = (axis == 0 ? -1 : 0); i < n[0]; ++i)
+        {
+          const std::int32_t here = image.At(i, j, k);
+          const std::int32_t there = image.At(i + (axis == 0), j + (axis == 1), k + (axis == 2));
+          if (here != there)
+            FaceList.push_back(Face{ { i, j, k }, axis, std::min(here, there), std::max(here, there) });
+        }
+
+  for (int a = 0; a < Dimension; ++a)
+    Bins[a] = (n[a] + 2) / Bin + 1;
+  const std::size_t bins = static_cast<std::size_t>(Bins[0]) * Bins[1] * Bins[2];
+  BinStart.assign(bins + 1, 0);
+  std::vector<std::uint32_t> binOf(FaceList.size());
+  for (std::size_t f = 0; f < FaceList.size(); ++f)
+  {
+    const Face& face = FaceList[f];
+    std::size_t bin = 0;
+    for (int a = Dimension - 1; a >= 0; --a)
+    {
+      const double centre = face.Voxel[a] + (a == face.Axis ? 0.5 : 0.0);
+      bin = bin * Bins[a] + BinOf(centre, a);
+    }
+    binOf[f] = static_cast<std::uint32_t>(bin);
+    ++BinStart[bin + 1];
+  }
+  for (std::size_t b = 0; b < bins; ++b)
+    BinStart[b + 1] += BinStart[b];
+  FaceOrder.resize(FaceList.size());
+  std::vector<std::uint32_t> next(BinStart.begin(), BinStart.end() - 1);
+  for (std::size_t f = 0; f < FaceList.size(); ++f)
+    FaceOrder[next[binOf[f]]++] = static_cast<std::uint32_t>(f);
+}
+
+int ImageBoundary::BinOf(double coordinate, int axis) const
+{
+  const int bin = static_cast<int>(std::floor((coordinate + 1.0) / Bin));
+  return std::clamp(bin, 0, Bins[axis] - 1);
+}
+
+ConvexPiece ImageBoundary::Piece(std::size_t f) const
+{
+  const Face& face = FaceList[f];
+  Point3 centre{ double(face.Voxel[0]), double(face.Voxel[1]), double(face.Voxel[2]) };
+  centre[face.Axis] += 0.5;
+  if (Dimension == 2)
+  {
+    Point3 a = centre, b = centre;
+    a[1 - face.Axis] -= 0.5;
+    b[1 - face.Axis] += 0.5;
+    return ConvexPiece{ 2, { a, b } };
+  }
+  const int u = (face.Axis + 1) % 3, v = (face.Axis + 2) % 3;
+  ConvexPiece square{ 4, {} };
+  const double corner[4][2] = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+  for (int c = 0; c < 4; ++c)
+  {
+    Point3 p = centre;
+    p[u] += corner[c][0];
+    p[v] += corner[c][1];
+    square.Points[c] = p;
+  }
+  return square;
+}
+
+void ImageBoundary::Pieces(const Point3& lo, const Point3& hi, std::int32_t low, std::int32_t high,
+  std::vector<ConvexPiece>& out) const
+{
+  // A face reaches half a voxel from its centre.
+  int from[3] = { 0, 0, 0 }, to[3] = { 0, 0, 0 };
+  for (int a = 0; a < Dimension; ++a)
+  {
+    from[a] = BinOf(lo[a] - 0.5, a);
+    to[a] = BinOf(hi[a] + 0.5, a);
+  }
+  for (int bz = from[2]; bz <= to[2]; ++bz)
+    for (int by = from[1]; by <= to[1]; ++by)
+      for (int bx = from[0]; bx <= to[0]; ++bx)
+      {
+        const std::size_t bin = (static_cast<std::size_t>(bz) * Bins[1] + by) * Bins[0] + bx;
+        for (std::uint32_t s = BinStart[bin]; s < BinStart[bin + 1]; ++s)
+        {
+          const std::uint32_t f = FaceOrder[s];
+          const Face& face = FaceList[f];
+          if (face.Low != low || face.High != high)
+            continue;
+          bool meets = true;
+          for (int a = 0; a < Dimension && meets; ++a)
+          {
+            const double c = face.Voxel[a] + (a == face.Axis ? 0.5 : 0.0);
+            const double reach = a == face.Axis ? 0.0 : 0.5;
+            meets = c + reach >= lo[a] && c - reach <= hi[a];
+          }
+          if (meets)
+            out.push_back(Piece(f));
+        }
+      }
+}
+
+} // namespace labelmesher

@@ -1,0 +1,400 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "Decimation/MeshDecimator.h"
+
+#include "Decimation/EdgeCollapse.h"
+#include "Decimation/EditableMesh.h"
+#include "Decimation/FidelityCheck.h"
+#include "Decimation/ImageBoundary.h"
+#include "Decimation/ImageBoundaryAnchors.h"
+#include "Decimation/MergeQueue.h"
+#include "Decimation/QualityCheck.h"
+#include "Decimation/TopologyCheck.h"
+#include "Mesh/MeshBoundary.h"
+#include "Support/ParallelChunks.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace labelmesher
+{
+namespace
+{
+
+/// Vertices per region of the parallel pass: large enough that borders are a
+/// small share, small enough that two cores stay busy on mid-sized meshes.
+constexpr std::size_t kRegionVertices = 131072;
+
+void Validate(const LabelImage& image, const SimplexMesh& mesh, const DecimationParameters& p)
+{
+  const int d = mesh.Dimension;
+  if (d != image.Dimension())
+    throw std::invalid_argument(std::string("the mesh is ") + (d == 3 ? "3D" : "2D") + " but the image is " +
+      (image.Dimension() == 3 ? "3D" : "2D"));
+  const double bound = ProvenAngleBound(d);
+  if (!(p.MinimumAngle > 0.0 && p.MinimumAngle <= bound))
+    throw std::invalid_argument("the minimum angle must be in (0, " + std::to_string(bound).substr(0, 4) +
+      "] degrees, the initial mesh's proven bound; got " + std::to_string(p.MinimumAngle));
+  if (!(p.ImageToMeshDistance >= 0.0) || !(p.MeshToImageDistance >= 0.0) || !std::isfinite(p.ImageToMeshDistance) ||
+    !std::isfinite(p.MeshToImageDistance))
+    throw std::invalid_argument("the distance bounds must be finite and non-negative");
+}
+
+/// The mesh must cover the image (its box is the octree domain) and every
+/// cell must have no angle below the bound: merges only keep what is there.
+void ValidateAgainstImage(const EditableMesh& mesh, const LabelImage& image, double minimumAngle)
+{
+  for (int a = 0; a < mesh.Dimension; ++a)
+    if (mesh.BoxLow[a] > -1 || mesh.BoxHigh[a] < 2 * image.Dimensions[a] - 1)
+      throw std::invalid_argument("the mesh does not cover the image: it is not the mesh of this image");
+  std::vector<double> smallest(MaxThreads(), 180.0);
+  ParallelChunks(mesh.Cells.size(), 65536, [&](unsigned thread, std::size_t begin, std::size_t end) {
+    Lattice p[4];
+    for (std::size_t c = begin; c < end; ++c)
+    {
+      for (int i = 0; i < mesh.VerticesPerCell(); ++i)
+        p[i] = mesh.Position[mesh.Cells[c][i]];
+      smallest[thread] = std::min(smallest[thread], QualityCheck::SmallestAngle(mesh.Dimension, p));
+    }
+  });
+  const double worst = *std::min_element(smallest.begin(), smallest.end());
+  if (worst < minimumAngle - 1e-9)
+    throw std::invalid_argument("the input mesh has an angle of " + std::to_string(worst) +
+      " degrees, below the minimum angle " + std::to_string(minimumAngle) + " asked for");
+}
+
+struct Shared
+{
+  const DecimationParameters& Parameters;
+  EditableMesh& Mesh;
+  ImageBoundaryAnchors& Anchors;
+  const std::vector<std::uint8_t>& Frozen;
+  std::vector<std::int32_t> Region; ///< per vertex
+  std::vector<std::uint32_t> Stamps;
+  std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
+  std::atomic<std::size_t> Offered{ 0 };
+  std::atomic<std::size_t> Merges{ 0 }; ///< for MaximumMerges
+  std::atomic<bool> Abort{ false };
+};
+
+/// One thread's checks and scratch.
+struct Worker
+{
+  Worker(const Shared& s, const ImageBoundary& boundary)
+    : Quality(s.Mesh.Dimension, s.Parameters.MinimumAngle)
+    , Fidelity(boundary, s.Anchors, s.Parameters.MeshToImageDistance)
+  {
+  }
+  QualityCheck Quality;
+  TopologyCheck Topology;
+  FidelityCheck Fidelity;
+  EdgeCollapse Merge;
+  DecimationCounts Counts;
+  std::vector<VertexId> Neighbours;
+  std::vector<std::pair<std::int64_t, VertexId>> Targets;
+};
+
+std::int64_t SquaredLength(const EditableMesh& mesh, VertexId a, VertexId b)
+{
+  std::int64_t s = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::int64_t d = mesh.Position[a][k] - mesh.Position[b][k];
+    s += d * d;
+  }
+  return s;
+}
+
+void NeighboursOf(const EditableMesh& mesh, VertexId v, std::vector<VertexId>& out)
+{
+  out.clear();
+  for (CellId c : mesh.CellsOf[v])
+    for (int i = 0; i < mesh.VerticesPerCell(); ++i)
+      if (mesh.Cells[c][i] != v)
+        out.push_back(mesh.Cells[c][i]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+std::int64_t ShortestEdge(const EditableMesh& mesh, VertexId v)
+{
+  std::int64_t shortest = INT64_MAX;
+  for (CellId c : mesh.CellsOf[v])
+    for (int i = 0; i < mesh.VerticesPerCell(); ++i)
+      if (mesh.Cells[c][i] != v)
+        shortest = std::min(shortest, SquaredLength(mesh, v, mesh.Cells[c][i]));
+  return shortest;
+}
+
+/// Every vertex of a merge's cells lies in `region`: then no other region's
+/// merge can touch them.
+bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
+{
+  for (VertexId v : { a, b })
+    for (CellId c : s.Mesh.CellsOf[v])
+      for (int i = 0; i < s.Mesh.VerticesPerCell(); ++i)
+        if (s.Region[s.Mesh.Cells[c][i]] != region)
+          return false;
+  return true;
+}
+
+/// Offers the queue's vertices for merging until it is empty (Algorithm 4's
+/// loop). `region` < 0: no region restriction. Vertices that only a region
+/// border kept from merging go to `held`. `tick` is called per vertex offered.
+template <typename Tick>
+void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region, std::vector<VertexId>& held,
+  Tick&& tick)
+{
+  EditableMesh& mesh = s.Mesh;
+  const auto& checks = s.Parameters.Checks;
+  VertexId a;
+  while (queue.Pop(a))
+  {
+    if (s.Merges >= s.Parameters.MaximumMerges)
+      return;
+    if (s.Parameters.Order == MergeOrder::ShortestEdgeFirst && !mesh.CellsOf[a].empty())
+    {
+      // Keys are lower bounds (see the push below): offer a only once its
+      // true shortest edge is due.
+      const std::int64_t shortest = ShortestEdge(mesh, a);
+      if (shortest > s.Key[a])
+      {
+        s.Key[a] = shortest;
+        queue.Push(a, shortest);
+        continue;
+      }
+    }
+    tick();
+    if (mesh.CellsOf[a].empty() || s.Frozen[a])
+      continue;
+    ++w.Counts.Offers;
+    const bool interior = TopologyCheck::IsInterior(mesh, a);
+    w.Quality.Prepare(mesh, a);
+    NeighboursOf(mesh, a, w.Neighbours);
+    w.Targets.clear();
+    for (VertexId x : w.Neighbours)
+      w.Targets.emplace_back(SquaredLength(mesh, a, x), x);
+    std::sort(w.Targets.begin(), w.Targets.end());
+    bool merged = false, blocked = false;
+    for (const auto& target : w.Targets)
+    {
+      const VertexId b = target.second;
+      if (checks.Quality && !w.Quality.OrientationsHold(mesh, b))
+      {
+        ++w.Counts.RejectedByQuality;
+        continue;
+      }
+      if (region >= 0 && !InRegion(s, a, b, region))
+      {
+        blocked = true;
+        continue;
+      }
+      w.Merge.Plan(mesh, a, b);
+      if (checks.Quality && !w.Quality.AnglesHold(mesh, w.Merge))
+      {
+        ++w.Counts.RejectedByQuality;
+        continue;
+      }
+      if (interior)
+      {
+        // No interface passes through a's star: the merge moves none, so
+        // neither distance can change (FidelityCheck has nothing to test).
+        if (checks.Topology && !w.Topology.AcceptsInteriorMove(mesh, w.Merge))
+        {
+          ++w.Counts.RejectedByTopology;
+          continue;
+        }
+      }
+      else if (!w.Merge.PlanInterfaces(mesh))
+      {
+        ++w.Counts.RejectedByTopology; // would not stay a conforming mesh of the box
+        continue;
+      }
+      else if (checks.Topology && !w.Topology.Accepts(mesh, w.Merge))
+      {
+        ++w.Counts.RejectedByTopology;
+        continue;
+      }
+      else if (checks.Fidelity && !w.Fidelity.Accepts(mesh, w.Merge))
+      {
+        ++w.Counts.RejectedByFidelity;
+        continue;
+      }
+      w.Merge.Apply(mesh);
+      if (checks.Fidelity && !interior)
+        s.Anchors.Commit(w.Merge, w.Fidelity.Updates);
+      ++w.Counts.Merges;
+      ++s.Merges;
+      // The merge changed the neighbourhoods of b and of a's neighbours, now b's.
+      // A neighbour x of b lost its edge to a and gained (at most) the edge
+      // to b, so min(old key, |xb|) bounds its new shortest edge from below:
+      // cheap to push, checked when popped. (Keying it by |xb| alone halves
+      // the offers but leaves 40 % more cells.)
+      NeighboursOf(mesh, b, w.Neighbours);
+      for (VertexId x : w.Neighbours)
+        if ((region < 0 || s.Region[x] == region) && !s.Frozen[x])
+        {
+          s.Key[x] = std::min(s.Key[x], SquaredLength(mesh, x, b));
+          queue.Push(x, s.Key[x]);
+        }
+      s.Key[b] = ShortestEdge(mesh, b);
+      queue.Push(b, s.Key[b]);
+      merged = true;
+      break;
+    }
+    if (!merged && blocked)
+      held.push_back(a);
+  }
+}
+
+void Add(DecimationCounts& total, const DecimationCounts& part)
+{
+  total.Offers += part.Offers;
+  total.Merges += part.Merges;
+  total.RejectedByQuality += part.RejectedByQuality;
+  total.RejectedByTopology += part.RejectedByTopology;
+  total.RejectedByFidelity += part.RejectedByFidelity;
+}
+
+/// Morton key of a doubled-lattice position (coordinates below 2^21).
+std::uint64_t Morton(const Lattice& p, const Lattice& low)
+{
+  std::uint64_t key = 0;
+  for (int bit = 20; bit >= 0; --bit)
+    for (int a = 2; a >= 0; --a)
+      key = (key << 1) | ((static_cast<std::uint64_t>(p[a] - low[a]) >> bit) & 1u);
+  return key;
+}
+
+} // namespace
+
+double ProvenAngleBound(int dimension)
+{
+  return dimension == 2 ? 45.0 : 30.0;
+}
+
+DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
+  const DecimationParameters& parameters, const ProgressObserver& observer)
+{
+  Validate(image, input, parameters);
+  DecimationResult result;
+  StageClock clock(result.Timings);
+  if (!observer.Report("decimation setup", 0.0))
+    throw AbortRequested{};
+
+  EditableMesh mesh(input);
+  ValidateAgainstImage(mesh, image, parameters.MinimumAngle);
+  const ImageBoundary boundary(image);
+  ImageBoundaryAnchors anchors(boundary, parameters.ImageToMeshDistance);
+  std::vector<std::uint8_t> frozen(mesh.Position.size(), 0);
+  {
+    const std::vector<InterfaceFace> faces = mesh.InterfaceFaces();
+    // The input must hold h(M, I) already: merges only check what they move.
+    std::vector<std::int64_t> far(MaxThreads(), -1);
+    ParallelChunks(faces.size(), 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
+      FidelityCheck check(boundary, anchors, parameters.MeshToImageDistance);
+      for (std::size_t f = begin; f < end && far[thread] < 0; ++f)
+        if (!check.FaceWithinBound(mesh, faces[f]))
+          far[thread] = static_cast<std::int64_t>(f);
+    });
+    for (std::int64_t f : far)
+      if (f >= 0)
+        throw std::invalid_argument("the input mesh does not hold h(M,I) <= " +
+          std::to_string(parameters.MeshToImageDistance) + " (a face between materials " +
+          std::to_string(std::max(faces[f].Low, 0)) + " and " + std::to_string(faces[f].High) +
+          " is farther from their image interface): mesh it with this bound or a smaller one first");
+    if (!observer.Report("decimation setup", 0.05))
+      throw AbortRequested{};
+    anchors.Initialize(mesh, faces, frozen);
+  }
+  result.Counts.CellsBefore = mesh.Cells.size();
+  result.Counts.VerticesBefore = mesh.AliveVertices();
+  result.Counts.FrozenVertices = static_cast<std::size_t>(std::count(frozen.begin(), frozen.end(), std::uint8_t(1)));
+  clock.Finish("decimation setup");
+
+  // Regions: runs of the Morton order of the vertices.
+  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, {}, {}, {} };
+  shared.Stamps.assign(mesh.Position.size(), 0);
+  shared.Key.assign(mesh.Position.size(), 0);
+  for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
+    if (!mesh.CellsOf[v].empty())
+      shared.Key[v] = ShortestEdge(mesh, v);
+  std::vector<VertexId> order;
+  for (std::size_t v = 0; v < mesh.Position.size(); ++v)
+    if (!mesh.CellsOf[v].empty())
+      order.push_back(static_cast<VertexId>(v));
+  std::vector<std::uint64_t> keys(mesh.Position.size());
+  for (VertexId v : order)
+    keys[v] = Morton(mesh.Position[v], mesh.BoxLow);
+  std::sort(order.begin(), order.end(), [&](VertexId x, VertexId y) { return keys[x] < keys[y] || (keys[x] == keys[y] && x < y); });
+  const std::size_t regions = std::max<std::size_t>(1, order.size() / kRegionVertices);
+  shared.Region.assign(mesh.Position.size(), -1);
+  for (std::size_t i = 0; i < order.size(); ++i)
+    shared.Region[order[i]] = static_cast<std::int32_t>(i * regions / order.size());
+
+  const double total = static_cast<double>(order.size());
+  // Offers are counted per thread and published every 1024; only the
+  // calling thread (0) talks to the observer.
+  auto tickFor = [&](unsigned thread, double start, double share) {
+    return [&, thread, start, share, local = std::size_t(0)]() mutable {
+      if (++local % 1024 != 0)
+        return;
+      const std::size_t offered = shared.Offered += 1024;
+      if (thread == 0 &&
+        !observer.Report("decimation", start + share * std::min(1.0, static_cast<double>(offered) / total)))
+        shared.Abort = true;
+      if (shared.Abort)
+        throw AbortRequested{};
+    };
+  };
+
+  // Pass 1: the regions, in parallel, borders frozen.
+  std::vector<std::vector<VertexId>> held(regions);
+  std::vector<DecimationCounts> counts(regions);
+  ParallelChunks(regions, 1, [&](unsigned thread, std::size_t begin, std::size_t end) {
+    Worker worker(shared, boundary);
+    for (std::size_t r = begin; r < end; ++r)
+    {
+      MergeQueue queue(parameters.Order, shared.Stamps);
+      for (std::size_t i = r * order.size() / regions; i < (r + 1) * order.size() / regions; ++i)
+        if (!frozen[order[i]])
+          queue.Push(order[i], shared.Key[order[i]]);
+      worker.Counts = {};
+      OfferVertices(shared, worker, queue, static_cast<std::int32_t>(r), held[r], tickFor(thread, 0.1, 0.75));
+      counts[r] = worker.Counts;
+    }
+  });
+  for (const auto& c : counts)
+    Add(result.Counts, c);
+
+  // Pass 2: what the borders held back, on one thread.
+  {
+    shared.Offered = 0;
+    Worker worker(shared, boundary);
+    MergeQueue queue(parameters.Order, shared.Stamps);
+    std::vector<VertexId> none;
+    for (const auto& list : held)
+      for (VertexId v : list)
+        if (!mesh.CellsOf[v].empty())
+          queue.Push(v, shared.Key[v]);
+    OfferVertices(shared, worker, queue, -1, none, tickFor(0, 0.85, 0.1));
+    Add(result.Counts, worker.Counts);
+  }
+  clock.Finish("decimation");
+
+  if (!observer.Report("decimation output", 0.95))
+    throw AbortRequested{};
+  result.Mesh = mesh.ToSimplexMesh();
+  MaterialInterfaces interfaces = ExtractMaterialInterfaces(result.Mesh);
+  result.Boundary = std::move(interfaces.Faces);
+  result.BoundaryMaterials = std::move(interfaces.Sides);
+  result.Counts.CellsAfter = result.Mesh.NumberOfCells();
+  result.Counts.VerticesAfter = result.Mesh.Points.size();
+  clock.Finish("decimation output");
+  observer.Report("decimation done", 1.0);
+  return result;
+}
+
+} // namespace labelmesher

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_MeshDecimator_h
+#define labelmesher_MeshDecimator_h
+
+/**
+ * @file MeshDecimator.h
+ * The decimation of section 3.1.3 (Algorithm 4) as one free function: the
+ * ORD initial mesh and its label image in, a coarser mesh out that keeps the
+ * angle bound, both distance bounds and the topology of every material,
+ * interface and feature curve.
+ *
+ * Vertices are merged into neighbours along edges (EdgeCollapse), each merge
+ * accepted only when its three checks hold, cheapest first: quality
+ * (QualityCheck: no inverted cell, no angle below the bound), topology
+ * (TopologyCheck: strata, link conditions, commutation; combinatorial and
+ * cheap) and fidelity (FidelityCheck: both one-sided distances, exact
+ * geometry). The queue offers the vertex with the shortest edge first.
+ *
+ * Parallel by regions: vertices are cut into runs of their Morton order (the
+ * octree's order, as p4est partitions it); each region is decimated on its
+ * own, on any core, with its border frozen (a merge may not touch a vertex of
+ * another region, so regions never share a cell), and the vertices a border
+ * held back are offered again in a second, sequential pass. The regions do
+ * not depend on the number of threads, so neither does the mesh. The same
+ * split runs per MPI rank on a p4est partition, with the ranks' borders
+ * handled in the second pass.
+ */
+
+#include "Decimation/DecimationParameters.h"
+#include "Mesh/SimplexMesh.h"
+#include "Support/LabelImage.h"
+#include "Support/ProgressObserver.h"
+#include "Support/StageClock.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct DecimationResult
+{
+  /// Every cell of the box, background (label 0) included, points in index space.
+  SimplexMesh Mesh;
+  /// The faces between different materials, as MesherResult::Boundary.
+  SimplexMesh Boundary;
+  std::vector<std::pair<std::int32_t, std::int32_t>> BoundaryMaterials;
+  DecimationCounts Counts;
+  std::vector<StageTiming> Timings;
+};
+
+/// The smallest angle (degrees) a decimation may ask for: the initial mesh's
+/// proven bound (Testing/Cxx/TestAngleBoundEnumeration.cxx).
+double ProvenAngleBound(int dimension);
+
+/// Decimates `mesh`, the whole box of the ORD mesh of `image` (background
+/// cells included: MesherResult::Mesh, or vtkLabelOctreeMesher with
+/// IncludeBackground on). Throws std::invalid_argument, naming the problem,
+/// for bad parameters, a mesh that does not fill its box or does not lie on
+/// the image's lattice, or an input that breaks a requested bound; and
+/// AbortRequested when `observer` says stop.
+DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& mesh,
+  const DecimationParameters& parameters, const ProgressObserver& observer = {});
+
+} // namespace labelmesher
+
+#endif

@@ -33,6 +33,28 @@ Point3 ImagePlacement::ToPhysical(const Point3& p) const
   return x;
 }
 
+bool ImagePlacement::ToIndex(const Point3& x, Point3& index) const
+{
+  double inverse[9];
+  std::copy(this->Direction, this->Direction + 9, inverse);
+  if (vtkMatrix3x3::Determinant(inverse) == 0.0)
+  {
+    return false;
+  }
+  vtkMatrix3x3::Invert(this->Direction, inverse);
+  double local[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    local[r] = inverse[3 * r] * (x[0] - this->Origin[0]) + inverse[3 * r + 1] * (x[1] - this->Origin[1]) +
+      inverse[3 * r + 2] * (x[2] - this->Origin[2]);
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    index[a] = (local[this->ImageAxis[a]] - this->Start[a]) / this->Step[a];
+  }
+  return true;
+}
+
 bool ImagePlacement::ReversesOrientation() const
 {
   double m[9]; // columns: physical image of each LabelImage axis

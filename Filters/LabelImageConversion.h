@@ -38,6 +38,9 @@ struct ImagePlacement
 
   /// physical = origin + direction * local(index)
   Point3 ToPhysical(const Point3& p) const;
+  /// The inverse: index-space coordinates of a physical point (the third is
+  /// 0 for a 2D image). False when the direction matrix is singular.
+  bool ToIndex(const Point3& physical, Point3& index) const;
 
   /// True when the index -> physical map reverses orientation (tetrahedra must
   /// then swap two vertices to stay positively oriented).

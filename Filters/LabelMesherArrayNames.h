@@ -50,6 +50,17 @@ inline constexpr char MeshComponents[] = "MeshComponents";
 inline constexpr char MeshEulerCharacteristic[] = "MeshEulerCharacteristic";
 inline constexpr char TopologyMatches[] = "TopologyMatches";
 
+// ---- field data: vtkMeshDecimator ----
+inline constexpr char AngleBound[] = "AngleBound"; ///< the MinimumAngle asked for, degrees
+inline constexpr char CellsBefore[] = "CellsBefore"; ///< kept cells of the input (foreground unless IncludeBackground)
+inline constexpr char CellsAfter[] = "CellsAfter";
+inline constexpr char Merges[] = "Merges";
+inline constexpr char MergeOffers[] = "MergeOffers";
+inline constexpr char MergesRejectedByQuality[] = "MergesRejectedByQuality";
+inline constexpr char MergesRejectedByTopology[] = "MergesRejectedByTopology";
+inline constexpr char MergesRejectedByFidelity[] = "MergesRejectedByFidelity";
+inline constexpr char FrozenVertices[] = "FrozenVertices";
+
 // ---- field data: vtkBezierCurver ----
 inline constexpr char Smoothness[] = "Smoothness";
 inline constexpr char Tension[] = "Tension";

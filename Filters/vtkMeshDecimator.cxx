@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "vtkMeshDecimator.h"
+
+#include "Decimation/MeshDecimator.h"
+#include "FilterSupport.h"
+#include "LabelImageConversion.h"
+#include "LabelMesherArrayNames.h"
+#include "Mesh/MeshSelection.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <exception>
+#include <string>
+
+vtkStandardNewMacro(vtkMeshDecimator);
+
+/*
+ * Design. RequestData is a sequence of passes, none of which knows the algorithm:
+ *   1. convert: the label image (port 1) as the core's LabelImage, with its
+ *               placement (LabelImageConversion.h);
+ *   2. gather:  the mesh (port 0) back in the image's index space, every cell
+ *               positively oriented there, with its Material;
+ *   3. decimate: labelmesher::DecimateMesh, progress and abort forwarded;
+ *   4. pack and measure, as vtkLabelOctreeMesher (FilterSupport.h).
+ */
+
+namespace
+{
+namespace arrays = labelmesher::arrays;
+
+/// Pass 2. Returns false with a sentence in `error`.
+bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& placement, int dimension,
+  labelmesher::SimplexMesh& mesh, std::string& error)
+{
+  const vtkIdType cells = input->GetNumberOfCells();
+  if (cells == 0 || !input->GetPoints())
+  {
+    error = "Input mesh has no cells: nothing to decimate.";
+    return false;
+  }
+  vtkDataArray* materials = input->GetCellData()->GetArray(arrays::Material);
+  if (!materials || materials->GetNumberOfComponents() != 1)
+  {
+    error = "Input mesh has no one-component cell array 'Material'.";
+    return false;
+  }
+  const int type = dimension == 3 ? VTK_TETRA : VTK_TRIANGLE;
+  mesh.Dimension = dimension;
+  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    const double* x = input->GetPoint(p);
+    labelmesher::Point3 index;
+    if (!placement.ToIndex({ x[0], x[1], x[2] }, index))
+    {
+      error = "The image's direction matrix is singular.";
+      return false;
+    }
+    if (dimension == 2)
+    {
+      if (std::abs(index[2]) > 1e-6)
+      {
+        error = "Input mesh does not lie in the plane of the 2D image on port 1: it is not that image's mesh.";
+        return false;
+      }
+      index[2] = 0.0;
+    }
+    mesh.Points[static_cast<std::size_t>(p)] = index;
+  }
+  const int nv = dimension + 1;
+  mesh.Connectivity.reserve(static_cast<std::size_t>(cells) * nv);
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    if (input->GetCellType(c) != type)
+    {
+      error = "Input cell " + std::to_string(c) + " is not a " + (dimension == 3 ? "tetrahedron" : "triangle") +
+        " (VTK type " + std::to_string(input->GetCellType(c)) + "), as the " + (dimension == 3 ? "3D" : "2D") +
+        " image on port 1 needs.";
+      return false;
+    }
+    const double value = materials->GetComponent(c, 0);
+    if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
+    {
+      error = "Input cell " + std::to_string(c) + " has Material " + std::to_string(value) +
+        ": expected a non-negative integer label.";
+      return false;
+    }
+    vtkIdType n;
+    const vtkIdType* ids;
+    input->GetCellPoints(c, n, ids);
+    std::int64_t v[4] = { ids[0], ids[1], ids[2], dimension == 3 ? ids[3] : 0 };
+    // Positively oriented in index space (a reflecting placement flips them).
+    const auto& a = mesh.Points[v[0]];
+    const auto& b = mesh.Points[v[1]];
+    const auto& d = mesh.Points[v[2]];
+    double orientation;
+    if (dimension == 2)
+    {
+      orientation = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    }
+    else
+    {
+      const auto& e = mesh.Points[v[3]];
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+      const double z[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] };
+      orientation = u[0] * (w[1] * z[2] - w[2] * z[1]) - u[1] * (w[0] * z[2] - w[2] * z[0]) +
+        u[2] * (w[0] * z[1] - w[1] * z[0]);
+    }
+    if (orientation < 0)
+    {
+      std::swap(v[1], v[2]);
+    }
+    mesh.Connectivity.insert(mesh.Connectivity.end(), v, v + nv);
+    mesh.Materials.push_back(static_cast<std::int32_t>(value));
+  }
+  return true;
+}
+
+/// A bound the user set (>= 0), or the one the mesher recorded.
+bool ResolveDistance(double set, vtkUnstructuredGrid* input, const char* name, double& value, std::string& error)
+{
+  if (set >= 0.0)
+  {
+    value = set;
+    return true;
+  }
+  vtkDataArray* recorded = input->GetFieldData()->GetArray(name);
+  if (!recorded || recorded->GetNumberOfTuples() < 1)
+  {
+    error = std::string("Set ") + name + ": the input mesh does not record the bound it was meshed with.";
+    return false;
+  }
+  value = recorded->GetComponent(0, 0);
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkMeshDecimator::vtkMeshDecimator()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkMeshDecimator::GetBoundaryOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkMeshDecimator::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkUnstructuredGrid" : "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMeshDecimator::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkMeshDecimator::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  labelmesher::RequestWholeImages(inputVector[1]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMeshDecimator::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkImageData* imageData = vtkImageData::GetData(inputVector[1], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  if (!input || !output || !boundary)
+  {
+    vtkErrorMacro("Missing input mesh or outputs.");
+    return 0;
+  }
+  if (!imageData)
+  {
+    vtkErrorMacro("No label image on port 1: the decimator measures the mesh against the image it came from.");
+    return 1;
+  }
+
+  std::string error;
+  labelmesher::ImagePlacement placement;
+  labelmesher::LabelImage image;
+  if (!labelmesher::ConvertLabelImage(imageData, this->GetInputArrayToProcess(0, inputVector), image, placement, error))
+  {
+    vtkErrorMacro("Label image on port 1: " << error << ".");
+    return 1;
+  }
+  labelmesher::SimplexMesh mesh;
+  labelmesher::DecimationParameters parameters;
+  parameters.MinimumAngle = this->MinimumAngle;
+  if (!GatherMesh(input, placement, image.Dimension(), mesh, error) ||
+    !ResolveDistance(this->ImageToMeshDistance, input, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance, error) ||
+    !ResolveDistance(this->MeshToImageDistance, input, arrays::MeshToImageDistance, parameters.MeshToImageDistance, error))
+  {
+    vtkErrorMacro(<< error);
+    return 1;
+  }
+
+  const double share = this->MeasureOutput ? 0.8 : 1.0;
+  labelmesher::DecimationResult result;
+  try
+  {
+    result = labelmesher::DecimateMesh(image, mesh, parameters, labelmesher::ForwardProgress(this, 0.0, share));
+  }
+  catch (const labelmesher::AbortRequested&)
+  {
+    vtkWarningMacro("Decimation aborted on request: output is empty.");
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Decimation failed: " << e.what() << ".");
+    return 1;
+  }
+
+  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(result.Mesh, this->IncludeBackground);
+  labelmesher::PackVolumeMesh(kept, placement, output);
+  labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
+
+  vtkFieldData* fd = output->GetFieldData();
+  std::size_t before = 0;
+  for (std::int32_t m : mesh.Materials)
+  {
+    before += this->IncludeBackground || m != 0;
+  }
+  const labelmesher::DecimationCounts& counts = result.Counts;
+  labelmesher::AddScalarField(fd, arrays::AngleBound, parameters.MinimumAngle);
+  labelmesher::AddScalarField(fd, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance);
+  labelmesher::AddScalarField(fd, arrays::MeshToImageDistance, parameters.MeshToImageDistance);
+  labelmesher::AddScalarField(fd, arrays::IncludeBackground, this->IncludeBackground ? 1.0 : 0.0);
+  labelmesher::AddScalarField(fd, arrays::VoxelSize, placement.VoxelSize);
+  labelmesher::AddScalarField(fd, arrays::CellsBefore, static_cast<double>(before));
+  labelmesher::AddScalarField(fd, arrays::CellsAfter, static_cast<double>(kept.NumberOfCells()));
+  labelmesher::AddScalarField(fd, arrays::Merges, static_cast<double>(counts.Merges));
+  labelmesher::AddScalarField(fd, arrays::MergeOffers, static_cast<double>(counts.Offers));
+  labelmesher::AddScalarField(fd, arrays::MergesRejectedByQuality, static_cast<double>(counts.RejectedByQuality));
+  labelmesher::AddScalarField(fd, arrays::MergesRejectedByTopology, static_cast<double>(counts.RejectedByTopology));
+  labelmesher::AddScalarField(fd, arrays::MergesRejectedByFidelity, static_cast<double>(counts.RejectedByFidelity));
+  labelmesher::AddScalarField(fd, arrays::FrozenVertices, static_cast<double>(counts.FrozenVertices));
+  if (this->MeasureOutput)
+  {
+    this->SetProgressText("measure");
+    this->UpdateProgress(share);
+    try
+    {
+      labelmesher::AddMeasurements(fd, image, kept, result.Timings,
+        [&](int checksDone) { this->UpdateProgress(share + (1.0 - share) * checksDone / 4.0); });
+    }
+    catch (const std::exception& e)
+    {
+      vtkWarningMacro("Measuring the mesh failed: " << e.what());
+    }
+  }
+  labelmesher::AddStageTimings(fd, result.Timings);
+  this->SetProgressText(nullptr);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMeshDecimator::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MinimumAngle: " << this->MinimumAngle << " degrees\n";
+  os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
+  os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";
+  os << indent << "IncludeBackground: " << (this->IncludeBackground ? "On" : "Off") << "\n";
+  os << indent << "MeasureOutput: " << (this->MeasureOutput ? "On" : "Off") << "\n";
+}

@@ -51,6 +51,17 @@ int ParseCount(const std::string& option, const std::string& text, int minimum)
   return static_cast<int>(value);
 }
 
+double ParseAngle(const std::string& text)
+{
+  double value = -1.0;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
+  if (!ReadWhole(text, read, value) || !(value > 0.0 && value <= 45.0))
+  {
+    throw UsageError("--min-angle expects degrees in (0, 30] (3D) or (0, 45] (2D), got '" + text + "'");
+  }
+  return value;
+}
+
 double ParseTension(const std::string& text)
 {
   double value = -1.0;
@@ -70,9 +81,10 @@ std::string Usage()
          "       labelmesher curve INPUT2D -o OUTPUT [options]\n"
          "\n"
          "mesh:  meshes a label image (integer labels, 0 = background) into labelled\n"
-         "       tetrahedra (3D) or triangles (2D images) with bounded angles and bounded\n"
-         "       Hausdorff distance.\n"
-         "curve: meshes a 2D label image as above, then curves the triangles into cubic\n"
+         "       tetrahedra (3D) or triangles (2D images) with bounded angles, bounded\n"
+         "       Hausdorff distance and the image's topology per material, then decimates\n"
+         "       the mesh within the same bounds (fewer cells).\n"
+         "curve: meshes and decimates a 2D label image as above, then curves the triangles into cubic\n"
          "       Bezier triangles (VTK_BEZIER_TRIANGLE) with C1 or C2 smooth material\n"
          "       boundaries, every cell proven valid; reports validity, the scaled\n"
          "       Jacobian histogram and pixel accuracy of the linear vs the curved mesh.\n"
@@ -87,6 +99,9 @@ std::string Usage()
          "                             of the smallest spacing                        [default 2]\n"
          "  --hausdorff H              set both bounds to H voxels\n"
          "  --report FILE.json         write the summary as JSON\n"
+         "  --min-angle DEG            smallest angle the decimator may create, degrees:\n"
+         "                             (0, 30] in 3D, (0, 45] in 2D                [default 15]\n"
+         "  --no-decimate              keep the initial mesh (angles >= 30 3D, 45 2D)\n"
          "  --include-background       keep the cells of label 0\n"
          "  --no-measure               do not measure the output (angles, distances,\n"
          "                             conformity, topology); saves 1-2x the meshing time\n"
@@ -98,7 +113,6 @@ std::string Usage()
          "  --max-untangling-steps N   most load fractions of the elastic untangling [default 64]\n"
          "  --quality-iterations N     further fraction doublings kept when the worst\n"
          "                             scaled Jacobian improves                    [default 0]\n"
-         "  --min-angle DEG            angle bound of the decimator (not built yet: rejected)\n"
          "  -h, --help                 this text\n"
          "  --version                  print the version\n";
 }
@@ -109,6 +123,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
   std::vector<std::string> words(argv + 1, argv + argc);
   std::vector<std::string> positional;
   std::string curveOption; // first curve-only option seen
+  bool minAngleGiven = false;
   for (std::size_t w = 0; w < words.size(); ++w)
   {
     std::string word = words[w];
@@ -203,8 +218,13 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     else if (word == "--min-angle")
     {
-      throw UsageError("--min-angle needs the decimator (vtkMeshDecimator), which is not built "
-                       "yet; the mesher's own bound is 45 degrees in 2D");
+      args.MinimumAngle = ParseAngle(takeValue());
+      minAngleGiven = true;
+    }
+    else if (word == "--no-decimate")
+    {
+      noValue();
+      args.Decimate = false;
     }
     else if (word == "--no-measure")
     {
@@ -238,6 +258,10 @@ Arguments ParseArguments(int argc, const char* const* argv)
     throw UsageError("unknown command '" + positional[0] + "': expected 'mesh' or 'curve'");
   }
   args.Command = positional[0];
+  if (minAngleGiven && !args.Decimate)
+  {
+    throw UsageError("--min-angle is the decimator's bound: it cannot go with --no-decimate");
+  }
   if (args.Command == "mesh" && !curveOption.empty())
   {
     throw UsageError(curveOption + " applies to 'curve' only");

@@ -55,7 +55,26 @@ bool RunReport::TopologyMatches() const
   return !this->Topology.empty();
 }
 
-RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh)
+namespace
+{
+
+void AppendTimings(vtkFieldData* fd, std::vector<std::pair<std::string, double>>& timings)
+{
+  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray(arrays::StageName));
+  vtkDataArray* seconds = fd->GetArray(arrays::StageSeconds);
+  if (names && seconds)
+  {
+    for (vtkIdType s = 0; s < names->GetNumberOfValues() && s < seconds->GetNumberOfTuples(); ++s)
+    {
+      timings.emplace_back(names->GetValue(s), seconds->GetComponent(s, 0));
+    }
+  }
+}
+
+} // namespace
+
+RunReport MakeReport(
+  const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial)
 {
   RunReport r;
   r.Input = args.Input;
@@ -101,14 +120,24 @@ RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructured
       r.Topology.push_back(e);
     }
   }
-  auto* names = vtkStringArray::SafeDownCast(fd->GetAbstractArray(arrays::StageName));
-  vtkDataArray* seconds = fd->GetArray(arrays::StageSeconds);
-  if (names && seconds)
+  if (initial && initial != mesh)
   {
-    for (vtkIdType s = 0; s < names->GetNumberOfValues() && s < seconds->GetNumberOfTuples(); ++s)
-    {
-      r.Timings.emplace_back(names->GetValue(s), seconds->GetComponent(s, 0));
-    }
+    AppendTimings(initial->GetFieldData(), r.Timings);
+  }
+  AppendTimings(fd, r.Timings);
+  if (fd->GetArray(arrays::Merges))
+  {
+    DecimationEntry d;
+    d.AngleBound = FieldValue(fd, arrays::AngleBound).value_or(0.0);
+    d.CellsBefore = FieldCount(fd, arrays::CellsBefore);
+    d.CellsAfter = FieldCount(fd, arrays::CellsAfter);
+    d.Merges = FieldCount(fd, arrays::Merges);
+    d.Offers = FieldCount(fd, arrays::MergeOffers);
+    d.RejectedByQuality = FieldCount(fd, arrays::MergesRejectedByQuality);
+    d.RejectedByTopology = FieldCount(fd, arrays::MergesRejectedByTopology);
+    d.RejectedByFidelity = FieldCount(fd, arrays::MergesRejectedByFidelity);
+    d.FrozenVertices = FieldCount(fd, arrays::FrozenVertices);
+    r.Decimation = d;
   }
   return r;
 }
@@ -125,6 +154,18 @@ void PrintSummary(const RunReport& r, std::ostream& out)
   for (const auto& entry : r.CellsPerMaterial)
   {
     out << "  " << std::setw(6) << entry.first << "  " << entry.second << "\n";
+  }
+  if (r.Decimation)
+  {
+    const DecimationEntry& d = *r.Decimation;
+    out << "Decimated: " << d.CellsBefore << " -> " << d.CellsAfter << " " << cellName << " (angle bound "
+        << FormatFixed(d.AngleBound, 2) << " deg; " << d.Merges << " merges, refused by quality "
+        << d.RejectedByQuality << ", topology " << d.RejectedByTopology << ", fidelity " << d.RejectedByFidelity
+        << ")\n";
+  }
+  else
+  {
+    out << "Not decimated (--no-decimate): the initial mesh\n";
   }
   const std::string unit = " voxels (1 voxel = " + FormatFixed(r.VoxelSize, 4) + ")";
   if (r.Measured())
@@ -212,9 +253,31 @@ void WriteJson(const RunReport& r, std::ostream& out)
   }
   j.EndObject();
   j.EndObject();
+  j.Key("decimation");
+  if (r.Decimation)
+  {
+    const DecimationEntry& d = *r.Decimation;
+    j.BeginObject();
+    j.Key("minimum_angle_bound_degrees").Number(d.AngleBound);
+    j.Key("cells_before").Integer(d.CellsBefore);
+    j.Key("cells_after").Integer(d.CellsAfter);
+    j.Key("merges").Integer(d.Merges);
+    j.Key("merge_offers").Integer(d.Offers);
+    j.Key("rejected_by_quality").Integer(d.RejectedByQuality);
+    j.Key("rejected_by_topology").Integer(d.RejectedByTopology);
+    j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
+    j.Key("frozen_vertices").Integer(d.FrozenVertices);
+    j.EndObject();
+  }
+  else
+  {
+    j.Null();
+  }
   j.Key("measured").Bool(r.Measured());
   j.Key("quality").BeginObject();
   j.Key("angle_kind").String(r.MeshDimension == 3 ? "dihedral" : "planar");
+  j.Key("angle_bound_degrees")
+    .Number(r.Decimation ? r.Decimation->AngleBound : (r.MeshDimension == 3 ? 30.0 : 45.0));
   j.Key("minimum_angle_degrees");
   optional(r.MinimumAngle);
   j.Key("maximum_angle_degrees");

@@ -36,6 +36,14 @@ struct TopologyEntry
   bool Matches = false;
 };
 
+/// What vtkMeshDecimator did (its field data).
+struct DecimationEntry
+{
+  double AngleBound = 0.0; ///< degrees
+  long long CellsBefore = 0, CellsAfter = 0, Merges = 0, Offers = 0;
+  long long RejectedByQuality = 0, RejectedByTopology = 0, RejectedByFidelity = 0, FrozenVertices = 0;
+};
+
 struct RunReport
 {
   std::string Input, Output;
@@ -56,6 +64,7 @@ struct RunReport
   /// boundary is the octree's cube and must be 0).
   std::optional<double> OverSharedFaces, HangingVertices, NonManifoldBoundaryEdges;
   std::vector<TopologyEntry> Topology;
+  std::optional<DecimationEntry> Decimation; ///< absent with --no-decimate
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
 
   bool Measured() const { return MinimumAngle.has_value(); }
@@ -69,8 +78,11 @@ long long FieldCount(vtkFieldData* fd, const char* name, vtkIdType tuple = 0);
 /// `value` with `digits` decimals.
 std::string FormatFixed(double value, int digits);
 
-/// Collects the figures of a finished run.
-RunReport MakeReport(const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh);
+/// Collects the figures of a finished run: `mesh` is what was written (the
+/// decimator's output, or the mesher's with --no-decimate), `initial` the
+/// mesher's output (its stage timings come first).
+RunReport MakeReport(
+  const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
 void PrintSummary(const RunReport& report, std::ostream& out);
 void WriteJson(const RunReport& report, std::ostream& out);
 

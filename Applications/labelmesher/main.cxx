@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /**
  * @file main.cxx
- * labelmesher: read a label image, run vtkLabelOctreeMesher (and for `curve`
- * vtkBezierCurver on its 2D mesh), write the mesh and the report. Exit status 0 on success, 1 when the input or the run fails, 2 on
+ * labelmesher: read a label image, run vtkLabelOctreeMesher and vtkMeshDecimator
+ * (and for `curve` vtkBezierCurver on the 2D mesh), write the mesh and the report. Exit status 0 on success, 1 when the input or the run fails, 2 on
  * a bad command line; every failure is reported as one line on stderr.
  */
 
@@ -19,6 +19,7 @@
 #include "vtkBezierCurver.h"
 #include "vtkImageData.h"
 #include "vtkLabelOctreeMesher.h"
+#include "vtkMeshDecimator.h"
 #include "vtkNew.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridWriter.h"
@@ -137,24 +138,42 @@ int Run(const Arguments& args)
       "' is 3D");
   }
 
+  // The decimator needs the whole box (background cells); it measures the
+  // final mesh, so the mesher does not measure what is decimated anyway.
   vtkNew<vtkLabelOctreeMesher> mesher;
   mesher->SetImageToMeshDistance(args.ImageToMeshDistance);
   mesher->SetMeshToImageDistance(args.MeshToImageDistance);
-  mesher->SetIncludeBackground(args.IncludeBackground);
-  mesher->SetMeasureOutput(args.Measure);
+  mesher->SetIncludeBackground(args.Decimate || args.IncludeBackground);
+  mesher->SetMeasureOutput(args.Measure && !args.Decimate);
   mesher->SetInputData(image);
   const std::string warning = UpdateWithProgress(mesher, args.Quiet);
-  vtkUnstructuredGrid* mesh = mesher->GetOutput();
-  if (mesh->GetNumberOfCells() == 0)
+  vtkUnstructuredGrid* initial = mesher->GetOutput();
+  if (initial->GetNumberOfCells() == 0)
   {
     throw RunError(warning.empty() ? "the mesher produced no cells" : warning);
+  }
+  vtkUnstructuredGrid* mesh = initial;
+  vtkNew<vtkMeshDecimator> decimator;
+  if (args.Decimate)
+  {
+    decimator->SetMinimumAngle(args.MinimumAngle);
+    decimator->SetIncludeBackground(args.IncludeBackground);
+    decimator->SetMeasureOutput(args.Measure);
+    decimator->SetInputConnection(0, mesher->GetOutputPort(0));
+    decimator->SetInputDataObject(1, image);
+    const std::string decimatorWarning = UpdateWithProgress(decimator, args.Quiet);
+    mesh = decimator->GetOutput();
+    if (mesh->GetNumberOfCells() == 0)
+    {
+      throw RunError(decimatorWarning.empty() ? "the decimator produced no cells" : decimatorWarning);
+    }
   }
 
   if (!curve)
   {
     const auto writeStart = std::chrono::steady_clock::now();
     WriteMesh(mesh, args.Output);
-    RunReport report = MakeReport(args, image, mesh);
+    RunReport report = MakeReport(args, image, mesh, initial);
     report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
     report.Timings.emplace_back("write", Seconds(writeStart));
     WriteReport(args.Report, report, WriteJson);
@@ -170,7 +189,7 @@ int Run(const Arguments& args)
   curver->SetTension(args.Tension);
   curver->SetMaximumUntanglingSteps(args.MaximumUntanglingSteps);
   curver->SetQualityIterations(args.QualityIterations);
-  curver->SetInputConnection(mesher->GetOutputPort(0));
+  curver->SetInputData(mesh);
   curver->SetInputDataObject(1, image);
   // An untangling failure is an error of the filter that still outputs the
   // marked mesh: write it and the report, then fail.
@@ -190,7 +209,7 @@ int Run(const Arguments& args)
   }
   const auto writeStart = std::chrono::steady_clock::now();
   WriteMesh(curved, args.Output);
-  RunReport linear = MakeReport(args, image, mesh);
+  RunReport linear = MakeReport(args, image, mesh, initial);
   linear.Timings.insert(linear.Timings.begin(), { "read", readSeconds });
   CurveReport report = MakeCurveReport(linear, args, curved);
   report.Timings.emplace_back("write", Seconds(writeStart));

@@ -50,6 +50,13 @@ ImageBoundary::ImageBoundary(const LabelImage& image)
   std::vector<std::uint32_t> next(BinStart.begin(), BinStart.end() - 1);
   for (std::size_t f = 0; f < FaceList.size(); ++f)
     FaceOrder[next[binOf[f]]++] = static_cast<std::uint32_t>(f);
+  // Within a bin by label pair: a query for one pair reads only its run.
+  for (std::size_t b = 0; b < bins; ++b)
+    std::sort(FaceOrder.begin() + BinStart[b], FaceOrder.begin() + BinStart[b + 1], [&](std::uint32_t x, std::uint32_t y) {
+      const Face& p = FaceList[x];
+      const Face& q = FaceList[y];
+      return p.Low != q.Low ? p.Low < q.Low : (p.High != q.High ? p.High < q.High : x < y);
+    });
 }
 
 int ImageBoundary::BinOf(double coordinate, int axis) const
@@ -98,12 +105,17 @@ void ImageBoundary::Pieces(const Point3& lo, const Point3& hi, std::int32_t low,
       for (int bx = from[0]; bx <= to[0]; ++bx)
       {
         const std::size_t bin = (static_cast<std::size_t>(bz) * Bins[1] + by) * Bins[0] + bx;
-        for (std::uint32_t s = BinStart[bin]; s < BinStart[bin + 1]; ++s)
+        const auto first = FaceOrder.begin() + BinStart[bin], last = FaceOrder.begin() + BinStart[bin + 1];
+        const auto run = std::lower_bound(first, last, 0u, [&](std::uint32_t f, std::uint32_t) {
+          const Face& face = FaceList[f];
+          return face.Low != low ? face.Low < low : face.High < high;
+        });
+        for (auto it = run; it != last; ++it)
         {
-          const std::uint32_t f = FaceOrder[s];
+          const std::uint32_t f = *it;
           const Face& face = FaceList[f];
           if (face.Low != low || face.High != high)
-            continue;
+            break;
           bool meets = true;
           for (int a = 0; a < Dimension && meets; ++a)
           {

@@ -329,7 +329,7 @@ void ImageBoundaryAnchors::Register(std::int32_t item, VertexId v)
 {
   auto& list = ItemsAt[v];
   list.push_back(item);
-  if (list.size() >= 2 * std::max<std::size_t>(16, PrunedSize[v]))
+  if (!Shared && list.size() >= 2 * std::max<std::size_t>(16, PrunedSize[v]))
   {
     // Drop entries whose certificate has moved on, and repeats.
     list.erase(std::remove_if(list.begin(), list.end(), [&](std::int32_t i) { return !Mentions(i, v); }), list.end());

@@ -61,6 +61,9 @@ public:
   void Commit(const EdgeCollapse& merge, const std::vector<Update>& updates);
 
   std::size_t NumberOfSides() const { return ItemFace.size(); }
+  /// While regions run at once, registrations are not pruned: pruning reads
+  /// certificates that another region may be rewriting.
+  void SetShared(bool shared) { Shared = shared; }
 
 private:
   static constexpr VertexId kStar = -2;   ///< Anchor {v, kStar, kStar}: the star of v
@@ -81,6 +84,7 @@ private:
   std::vector<std::vector<std::int32_t>> ItemsAt; ///< per vertex; entries may be stale (Mentions decides)
   std::vector<std::uint32_t> PrunedSize;
   std::vector<std::uint32_t> StarAnchors; ///< per vertex: star certificates that rest on it
+  bool Shared = false;
 };
 
 /// The mesh face `face` in index space.

@@ -23,9 +23,6 @@ namespace labelmesher
 namespace
 {
 
-/// Vertices per region of the parallel pass: large enough that borders are a
-/// small share, small enough that two cores stay busy on mid-sized meshes.
-constexpr std::size_t kRegionVertices = 131072;
 
 void Validate(const LabelImage& image, const SimplexMesh& mesh, const DecimationParameters& p)
 {
@@ -132,6 +129,10 @@ std::int64_t ShortestEdge(const EditableMesh& mesh, VertexId v)
 /// merge can touch them.
 bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
 {
+  // b first: its cells may be another region's, being edited right now,
+  // until b is known to be ours.
+  if (s.Region[b] != region)
+    return false;
   for (VertexId v : { a, b })
     for (CellId c : s.Mesh.CellsOf[v])
       for (int i = 0; i < s.Mesh.VerticesPerCell(); ++i)
@@ -167,7 +168,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       }
     }
     tick();
-    if (mesh.CellsOf[a].empty() || s.Frozen[a])
+    if (mesh.CellsOf[a].empty() || s.Frozen[a] || (region >= 0 && s.Region[a] != region))
       continue;
     ++w.Counts.Offers;
     const bool interior = TopologyCheck::IsInterior(mesh, a);
@@ -329,10 +330,8 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   for (VertexId v : order)
     keys[v] = Morton(mesh.Position[v], mesh.BoxLow);
   std::sort(order.begin(), order.end(), [&](VertexId x, VertexId y) { return keys[x] < keys[y] || (keys[x] == keys[y] && x < y); });
-  const std::size_t regions = std::max<std::size_t>(1, order.size() / kRegionVertices);
+  const std::size_t regions = std::max<std::size_t>(1, order.size() / kDecimationRegionVertices);
   shared.Region.assign(mesh.Position.size(), -1);
-  for (std::size_t i = 0; i < order.size(); ++i)
-    shared.Region[order[i]] = static_cast<std::int32_t>(i * regions / order.size());
 
   const double total = static_cast<double>(order.size());
   // Offers are counted per thread and published every 1024; only the
@@ -350,39 +349,69 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
     };
   };
 
-  // Pass 1: the regions, in parallel, borders frozen.
-  std::vector<std::vector<VertexId>> held(regions);
-  std::vector<DecimationCounts> counts(regions);
-  ParallelChunks(regions, 1, [&](unsigned thread, std::size_t begin, std::size_t end) {
-    Worker worker(shared, boundary);
-    for (std::size_t r = begin; r < end; ++r)
-    {
-      MergeQueue queue(parameters.Order, shared.Stamps);
-      for (std::size_t i = r * order.size() / regions; i < (r + 1) * order.size() / regions; ++i)
-        if (!frozen[order[i]])
-          queue.Push(order[i], shared.Key[order[i]]);
-      worker.Counts = {};
-      OfferVertices(shared, worker, queue, static_cast<std::int32_t>(r), held[r], tickFor(thread, 0.1, 0.75));
-      counts[r] = worker.Counts;
-    }
-  });
-  for (const auto& c : counts)
-    Add(result.Counts, c);
+  // One parallel pass: the Morton order cut into `regions` runs, the cuts
+  // moved by `shift` (a fraction of a run), each run decimated on its own
+  // with its border frozen. Offers the vertices of `offered` (all, or those
+  // a border held back before); returns those a border holds back now.
+  auto regionPass = [&](const std::vector<std::uint8_t>& offered, double shift, double start, double share) {
+    const std::size_t n = order.size();
+    const std::size_t offset = static_cast<std::size_t>(shift * n / regions);
+    // Run r holds positions [runStart(r), runStart(r + 1)) of the shifted order;
+    // the same bounds decide membership and what a run queues.
+    auto runStart = [&](std::size_t r) { return r * n / regions; };
+    for (std::size_t r = 0; r < regions; ++r)
+      for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
+        shared.Region[order[(i + offset) % n]] = static_cast<std::int32_t>(r);
+    std::vector<std::vector<VertexId>> held(regions);
+    std::vector<DecimationCounts> counts(regions);
+    shared.Offered = 0;
+    anchors.SetShared(regions > 1);
+    ParallelChunks(regions, 1, [&](unsigned thread, std::size_t begin, std::size_t end) {
+      Worker worker(shared, boundary);
+      auto tick = tickFor(thread, start, share);
+      for (std::size_t r = begin; r < end; ++r)
+      {
+        MergeQueue queue(parameters.Order, shared.Stamps);
+        for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
+        {
+          const VertexId v = order[(i + offset) % n];
+          if (offered[v] && !frozen[v] && !mesh.CellsOf[v].empty())
+            queue.Push(v, shared.Key[v]);
+        }
+        worker.Counts = {};
+        OfferVertices(shared, worker, queue, static_cast<std::int32_t>(r), held[r], tick);
+        counts[r] = worker.Counts;
+      }
+    });
+    anchors.SetShared(false);
+    for (const auto& c : counts)
+      Add(result.Counts, c);
+    std::vector<std::uint8_t> next(mesh.Position.size(), 0);
+    for (const auto& list : held)
+      for (VertexId v : list)
+        next[v] = 1;
+    return next;
+  };
 
-  // Pass 2: what the borders held back, on one thread.
+  // Pass 1: every vertex; pass 2: what its borders held back, with the cuts
+  // moved half a run, so that the old borders lie inside the new runs; pass
+  // 3: what remains, on one thread.
+  std::vector<std::uint8_t> held = regionPass(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.0, 0.1, 0.7);
+  if (regions > 1)
+    held = regionPass(held, 0.5, 0.8, 0.08);
+  clock.Finish("decimation regions");
   {
     shared.Offered = 0;
     Worker worker(shared, boundary);
     MergeQueue queue(parameters.Order, shared.Stamps);
     std::vector<VertexId> none;
-    for (const auto& list : held)
-      for (VertexId v : list)
-        if (!mesh.CellsOf[v].empty())
-          queue.Push(v, shared.Key[v]);
-    OfferVertices(shared, worker, queue, -1, none, tickFor(0, 0.85, 0.1));
+    for (VertexId v : order)
+      if (held[v] && !mesh.CellsOf[v].empty())
+        queue.Push(v, shared.Key[v]);
+    OfferVertices(shared, worker, queue, -1, none, tickFor(0, 0.88, 0.07));
     Add(result.Counts, worker.Counts);
   }
-  clock.Finish("decimation");
+  clock.Finish("decimation borders");
 
   if (!observer.Report("decimation output", 0.95))
     throw AbortRequested{};

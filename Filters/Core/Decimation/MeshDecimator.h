@@ -32,6 +32,7 @@
 #include "Support/ProgressObserver.h"
 #include "Support/StageClock.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -49,6 +50,10 @@ struct DecimationResult
   DecimationCounts Counts;
   std::vector<StageTiming> Timings;
 };
+
+/// Vertices per region of the parallel passes (the regions depend on the mesh
+/// only, never on the number of threads).
+constexpr std::size_t kDecimationRegionVertices = 16384;
 
 /// The smallest angle (degrees) a decimation may ask for: the initial mesh's
 /// proven bound (Testing/Cxx/TestAngleBoundEnumeration.cxx).

@@ -45,9 +45,20 @@ bool TopologyCheck::IsInterior(const EditableMesh& mesh, VertexId v)
   return true;
 }
 
-bool TopologyCheck::Accepts(const EditableMesh& mesh, const EdgeCollapse& merge)
+void TopologyCheck::Bind(const EditableMesh& mesh)
 {
   Dimension = mesh.Dimension;
+  if (Seen.size() != mesh.Position.size())
+  {
+    Seen.assign(mesh.Position.size(), 0u);
+    LocalId.assign(mesh.Position.size(), 0);
+    Epoch = 0;
+  }
+}
+
+bool TopologyCheck::Accepts(const EditableMesh& mesh, const EdgeCollapse& merge)
+{
+  Bind(mesh);
   return StrataAllowMove(mesh, merge) && LinkConditions(mesh, merge) && Commutes(mesh, merge);
 }
 
@@ -142,14 +153,22 @@ bool TopologyCheck::LinkCondition(VertexId a, VertexId b)
   // Faces of the links are sets of up to three vertices; numbered locally
   // (the two stars hold at most a few hundred vertices) a face packs into one
   // 32-bit key, 10 bits per vertex, 0 for none.
-  Local.clear();
-  for (std::size_t t = 0; t < Tops.size(); ++t)
-    Local.insert(Local.end(), Tops[t].begin(), Tops[t].begin() + TopSizes[t]);
-  SortUnique(Local);
-  if (Local.size() >= 1023)
-    return false; // too large to judge this way: refuse, never accept unproven
-  auto local = [&](VertexId v) {
-    return static_cast<std::uint32_t>(std::lower_bound(Local.begin(), Local.end(), v) - Local.begin()) + 1;
+  // Local numbers by first sight (a stamp per mesh vertex, so no sort).
+  if (++Epoch == 0)
+  {
+    std::fill(Seen.begin(), Seen.end(), 0u);
+    Epoch = 1;
+  }
+  std::uint32_t count = 0, coneId = 0;
+  auto local = [&](VertexId v) -> std::uint32_t {
+    if (v == kCone)
+      return coneId ? coneId : (coneId = ++count);
+    if (Seen[v] != Epoch)
+    {
+      Seen[v] = Epoch;
+      LocalId[v] = static_cast<std::uint16_t>(std::min<std::uint32_t>(++count, 1023));
+    }
+    return LocalId[v];
   };
   SA.clear();
   SB.clear();
@@ -190,6 +209,8 @@ bool TopologyCheck::LinkCondition(VertexId a, VertexId b)
     else if (hasB)
       addSubsets(rest, n, SB);
   }
+  if (count >= 1023)
+    return false; // too large to judge this way: refuse, never accept unproven
   SortUnique(SA);
   SortUnique(SB);
   SortUnique(SAB);
@@ -217,7 +238,7 @@ bool TopologyCheck::AcceptsInteriorMove(const EditableMesh& mesh, const EdgeColl
   // a inside one material, off the box: no stratum, interface or curve
   // passes through its star, so the merge changes none of them, and K's link
   // condition is all there is (Lk(a) has no cone vertex).
-  Dimension = mesh.Dimension;
+  Bind(mesh);
   const int nv = mesh.VerticesPerCell();
   Tops.clear();
   TopSizes.clear();

@@ -74,7 +74,10 @@ private:
   std::vector<std::array<VertexId, 4>> Tops; // top simplices of one subcomplex, sorted, -1 padded
   std::vector<int> TopSizes;
   std::vector<std::uint32_t> SA, SB, SAB;
-  std::vector<VertexId> Local;
+  void Bind(const EditableMesh& mesh);
+  std::vector<std::uint32_t> Seen; ///< per mesh vertex: the epoch it was numbered in
+  std::vector<std::uint16_t> LocalId;
+  std::uint32_t Epoch = 0;
   std::vector<std::int32_t> LabelsA, LabelsAB;
   std::vector<std::pair<std::int32_t, std::int32_t>> PairsA, PairsAB;
   std::vector<VertexId> FeatureA, FeatureB, FeatureAfter;

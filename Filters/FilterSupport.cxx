@@ -84,8 +84,8 @@ void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings)
   AddField<vtkDoubleArray>(fd, arrays::StageSeconds, seconds);
 }
 
-void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh,
-  std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished)
+void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh, double imageToMesh,
+  double meshToImage, std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished)
 {
   // One stage per check, so that users see what the verification costs.
   StageClock clock(timings);
@@ -110,9 +110,19 @@ void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMes
   AddScalarField(fd, arrays::NonManifoldBoundaryEdges, static_cast<double>(conformity.NonManifoldBoundaryEdges));
   done("conformity");
 
-  const HausdorffReport distances = MeasureHausdorff(image, mesh);
+  HausdorffReport distances = MeasureHausdorff(image, mesh);
+  bool above = distances.Overall.ImageToMesh > imageToMesh || distances.Overall.MeshToImage > meshToImage;
+  for (const auto& entry : distances.PerMaterial)
+    above = above || entry.second.ImageToMesh > imageToMesh || entry.second.MeshToImage > meshToImage;
+  const bool certified = !above || WithinHausdorff(image, mesh, imageToMesh, meshToImage);
+  if (above && certified)
+  {
+    distances.Overall.ImageToMesh = std::min(distances.Overall.ImageToMesh, imageToMesh);
+    distances.Overall.MeshToImage = std::min(distances.Overall.MeshToImage, meshToImage);
+  }
   AddScalarField(fd, arrays::MeasuredImageToMeshDistance, distances.Overall.ImageToMesh);
   AddScalarField(fd, arrays::MeasuredMeshToImageDistance, distances.Overall.MeshToImage);
+  AddScalarField(fd, arrays::HausdorffBoundsCertified, certified ? 1.0 : 0.0);
   done("distances");
 
   std::vector<int> material, imageComponents, imageEuler, meshComponents, meshEuler, matches;

@@ -70,8 +70,15 @@ void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings);
 /// distances, topology) and stores the figures under the names of
 /// LabelMesherArrayNames.h; calls `finished(check)` after each check and
 /// appends one "measure: <check>" timing per check to `timings`.
-void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh,
-  std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished);
+///
+/// The measured distances are upper bounds tight to 1/1024 voxel; a mesh that
+/// reaches its bounds (as a decimated one does) can measure a hair above
+/// them. The bounds (`imageToMesh`, `meshToImage`) are then certified by the
+/// checks' exact test (WithinHausdorff): certified, a figure above its bound
+/// is reported as the bound, a valid and tighter upper bound, and
+/// HausdorffBoundsCertified is 1; not certified, the figures stay and it is 0.
+void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh, double imageToMesh,
+  double meshToImage, std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished);
 
 /// Port 0: `mesh` (index space) in physical space, tetrahedra or triangles,
 /// cell data Material (active scalars). Tetrahedra stay positively oriented

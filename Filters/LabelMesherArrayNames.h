@@ -43,6 +43,8 @@ inline constexpr char HangingVertices[] = "HangingVertices";
 inline constexpr char NonManifoldBoundaryEdges[] = "NonManifoldBoundaryEdges";
 inline constexpr char MeasuredImageToMeshDistance[] = "MeasuredImageToMeshDistance";
 inline constexpr char MeasuredMeshToImageDistance[] = "MeasuredMeshToImageDistance";
+/// 1 when the checks' exact test certifies both distance bounds, 0 when it does not.
+inline constexpr char HausdorffBoundsCertified[] = "HausdorffBoundsCertified";
 inline constexpr char TopologyMaterial[] = "TopologyMaterial";
 inline constexpr char ImageComponents[] = "ImageComponents";
 inline constexpr char ImageEulerCharacteristic[] = "ImageEulerCharacteristic";

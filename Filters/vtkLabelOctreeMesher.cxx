@@ -152,7 +152,7 @@ void vtkLabelOctreeMesher::Measure(vtkFieldData* fd, const labelmesher::LabelIma
   this->UpdateProgress(measureStart);
   try
   {
-    labelmesher::AddMeasurements(fd, image, kept, timings,
+    labelmesher::AddMeasurements(fd, image, kept, this->ImageToMeshDistance, this->MeshToImageDistance, timings,
       [&](int checksDone) { this->UpdateProgress(measureStart + (1.0 - measureStart) * checksDone / 4.0); });
   }
   catch (const std::exception& e)

@@ -68,7 +68,10 @@
  *   in 3D, planar in 2D, over the output cells), `InvertedCells`;
  *   `OverSharedFaces`, `HangingVertices`, `NonManifoldBoundaryEdges`
  *   (conformity); `MeasuredImageToMeshDistance`, `MeasuredMeshToImageDistance`
- *   (upper bounds on the one-sided Hausdorff distances, distance units) and, one
+ *   (upper bounds on the one-sided Hausdorff distances, distance units, tight to
+ *   1/1024; a figure above its bound that the checks' exact test certifies
+ *   is reported as the bound) and `HausdorffBoundsCertified` (1: both bounds
+ *   certified by that test); and, one
  *   tuple per non-zero material, `TopologyMaterial`, `ImageComponents`,
  *   `ImageEulerCharacteristic`, `MeshComponents`, `MeshEulerCharacteristic`,
  *   `TopologyMatches` (1 or 0).

@@ -167,6 +167,12 @@ vtkPolyData* vtkMeshDecimator::GetBoundaryOutput()
 int vtkMeshDecimator::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkUnstructuredGrid" : "vtkImageData");
+  if (port == 1)
+  {
+    // Required in fact; optional to the pipeline so that RequestData can say
+    // plainly what is missing instead of the executive's generic message.
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
@@ -278,7 +284,8 @@ int vtkMeshDecimator::RequestData(
     this->UpdateProgress(share);
     try
     {
-      labelmesher::AddMeasurements(fd, image, kept, result.Timings,
+      labelmesher::AddMeasurements(fd, image, kept, parameters.ImageToMeshDistance, parameters.MeshToImageDistance,
+        result.Timings,
         [&](int checksDone) { this->UpdateProgress(share + (1.0 - share) * checksDone / 4.0); });
     }
     catch (const std::exception& e)

@@ -103,6 +103,7 @@ RunReport MakeReport(
   r.InvertedCells = FieldValue(fd, arrays::InvertedCells);
   r.MeasuredImageToMesh = FieldValue(fd, arrays::MeasuredImageToMeshDistance);
   r.MeasuredMeshToImage = FieldValue(fd, arrays::MeasuredMeshToImageDistance);
+  r.HausdorffCertified = FieldValue(fd, arrays::HausdorffBoundsCertified);
   r.OverSharedFaces = FieldValue(fd, arrays::OverSharedFaces);
   r.HangingVertices = FieldValue(fd, arrays::HangingVertices);
   r.NonManifoldBoundaryEdges = FieldValue(fd, arrays::NonManifoldBoundaryEdges);
@@ -178,6 +179,8 @@ void PrintSummary(const RunReport& r, std::ostream& out)
         << FormatFixed(r.ImageToMeshBound, 3) << ")" << unit << "\n";
     out << "Hausdorff h(M,I): " << FormatFixed(r.MeasuredMeshToImage.value_or(0.0), 3) << " (bound "
         << FormatFixed(r.MeshToImageBound, 3) << ")" << unit << "\n";
+    out << "Both bounds " << (r.HausdorffCertified.value_or(0.0) == 1.0 ? "certified" : "NOT certified")
+        << " by the checks' exact test\n";
     out << "Conformity: " << static_cast<long long>(r.OverSharedFaces.value_or(0.0))
         << " over-shared faces, " << static_cast<long long>(r.HangingVertices.value_or(0.0))
         << " hanging vertices, " << static_cast<long long>(r.NonManifoldBoundaryEdges.value_or(0.0))
@@ -299,6 +302,15 @@ void WriteJson(const RunReport& r, std::ostream& out)
   optional(r.MeasuredImageToMesh);
   j.Key("mesh_to_image");
   optional(r.MeasuredMeshToImage);
+  j.Key("bounds_certified");
+  if (r.HausdorffCertified)
+  {
+    j.Bool(*r.HausdorffCertified == 1.0);
+  }
+  else
+  {
+    j.Null();
+  }
   j.Key("image_to_mesh_bound").Number(r.ImageToMeshBound);
   j.Key("mesh_to_image_bound").Number(r.MeshToImageBound);
   j.EndObject();

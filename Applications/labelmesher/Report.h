@@ -57,6 +57,7 @@ struct RunReport
   /// Present only when the filter measured its output.
   std::optional<double> MinimumAngle, MaximumAngle, InvertedCells;
   std::optional<double> MeasuredImageToMesh, MeasuredMeshToImage;
+  std::optional<double> HausdorffCertified; ///< 1 when the checks' exact test certifies both bounds
   /// Conformity of the written mesh: faces shared by more than two cells,
   /// hanging vertices, boundary edges not shared by exactly two boundary faces
   /// (non-zero also where the image itself is non-manifold, e.g. two voxels of

@@ -21,8 +21,9 @@ from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 EXE, WORK, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
-ANGLE_BOUND = math.degrees(math.asin(1.0 / 3.0))
-REPORT_KEYS = {"input", "output", "image", "parameters", "mesh", "measured", "quality",
+PROVEN_BOUND = {3: 30.0, 2: 45.0}  # the initial mesh's, degrees (TestAngleBoundEnumeration)
+DEFAULT_MIN_ANGLE = 15.0           # the decimator's default --min-angle
+REPORT_KEYS = {"input", "output", "image", "parameters", "mesh", "decimation", "measured", "quality",
                "fidelity", "topology", "timings", "total_seconds"}
 
 
@@ -140,8 +141,17 @@ def check_mesh_and_report(mesh_file, report_file, cell_type, labels):
     stages = [t["stage"] for t in report["timings"]]
     assert stages[0] == "read" and stages[-1] == "write", stages
     assert all(t["seconds"] >= 0 for t in report["timings"])
+    decimation = report["decimation"]
+    bound = PROVEN_BOUND[report["mesh"]["dimension"]] if decimation is None else decimation["minimum_angle_bound_degrees"]
+    assert report["quality"]["angle_bound_degrees"] == bound, report["quality"]
+    if decimation is not None:
+        assert decimation["cells_after"] == grid.GetNumberOfCells(), decimation
+        assert decimation["cells_after"] <= decimation["cells_before"], decimation
+        assert decimation["merges"] > 0, decimation
+        assert any(t["stage"] == "decimation" for t in report["timings"]), report["timings"]
     if report["measured"]:
-        assert report["quality"]["minimum_angle_degrees"] >= ANGLE_BOUND - 1e-6, report["quality"]
+        assert report["quality"]["minimum_angle_degrees"] >= bound - 1e-9, report["quality"]
+        assert report["fidelity"]["bounds_certified"] is True, report["fidelity"]
         assert report["quality"]["inverted_cells"] == 0
         assert {e["material"] for e in report["topology"]["materials"]} >= set(labels) - {0}
         for key in ("image_to_mesh", "mesh_to_image"):
@@ -297,6 +307,40 @@ def case_no_measure():
     print("OK: no measure")
 
 
+def case_no_decimate():
+    """The initial mesh: the proven 30 degrees, no decimation in the report."""
+    image = write_nrrd("ball.nrrd", ball(12, 4.5).astype(np.uint8), "uchar")
+    result = run("mesh", image, "-o", path("mesh.vtu"), "--report", path("report.json"), "--no-decimate")
+    assert result.returncode == 0, result.stderr
+    assert "Not decimated" in result.stdout, result.stdout
+    grid, report = check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TETRA, {1})
+    assert report["decimation"] is None
+    assert report["quality"]["minimum_angle_degrees"] >= 30.0 - 1e-9
+    decimated = run("mesh", image, "-o", path("decimated.vtu"), "--report", path("decimated.json"))
+    assert decimated.returncode == 0, decimated.stderr
+    with open(path("decimated.json")) as f:
+        assert json.load(f)["decimation"]["cells_before"] == grid.GetNumberOfCells()
+    print("OK: no decimation")
+
+
+def case_min_angle():
+    """--min-angle is the decimated mesh's bound: larger keeps more cells; above
+    the proven 30 degrees (3D) it is refused with one line."""
+    image = write_nrrd("ball.nrrd", ball(16, 6.5).astype(np.uint8), "uchar")
+    cells = {}
+    for angle in ("10", "25"):
+        result = run("mesh", image, "-o", path(angle + ".vtu"), "--report", path(angle + ".json"),
+                     "--min-angle", angle)
+        assert result.returncode == 0, result.stderr
+        grid, report = check_mesh_and_report(path(angle + ".vtu"), path(angle + ".json"), VTK_TETRA, {1})
+        assert report["decimation"]["minimum_angle_bound_degrees"] == float(angle)
+        cells[angle] = grid.GetNumberOfCells()
+    assert cells["10"] < cells["25"], cells
+    expect_failure(run("mesh", image, "-o", path("40.vtu"), "--min-angle", "40"), "(0, 30", 1)
+    assert not os.path.exists(path("40.vtu")), "a failed run leaves no file"
+    print("OK: min angle", cells)
+
+
 def two_blobs_png(name):
     """A disc of label 2 touching a disc of label 5 (an interface between two
     materials and with the background) on a 48 x 40 image."""
@@ -355,7 +399,9 @@ def case_curve_bad_options():
     png = two_blobs_png("blobs.png")
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--smoothness", "3"), "1 (C1) or 2", 2)
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--tension", "1.5"), "[0, 1]", 2)
-    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "30"), "decimator", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "50"), "(0, 45] (2D)", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "20", "--no-decimate"),
+                   "--no-decimate", 2)
     expect_failure(run("mesh", png, "-o", path("out.vtu"), "--smoothness", "2"), "'curve' only", 2)
 
 

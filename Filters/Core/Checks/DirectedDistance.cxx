@@ -162,7 +162,11 @@ private:
 
   static constexpr int MaxDepthPolygon = 14; ///< 4^14 sub-elements at most (work budget below)
   static constexpr int MaxDepthSegment = 40;
-  static constexpr long long WorkBudget = 200000000; ///< candidate distance evaluations
+  /// Candidate distance evaluations: 200 million, and 2,000 more per element,
+  /// so that a mesh of millions of faces whose distance reaches its bound in
+  /// many places is refined to the tolerance there (a fixed budget ran out
+  /// on the first pass over a decimated whole-body mouse).
+  long long WorkBudget() const { return 200000000LL + 2000LL * static_cast<long long>(Elements.size()); }
 
   static std::vector<std::array<Point3, 2>> BoxesOf(const std::vector<Shape>& shapes)
   {
@@ -266,7 +270,7 @@ private:
     return { std::sqrt(lo), std::sqrt(upper) };
   }
 
-  bool OverBudget() const { return Work.load(std::memory_order_relaxed) > WorkBudget; }
+  bool OverBudget() const { return Work.load(std::memory_order_relaxed) > WorkBudget(); }
 
   void Refine(const Shape& e, const std::vector<std::uint32_t>& cands, int depth, double tolerance,
     std::atomic<double>& globalLB, double& result, Workspace& ws)

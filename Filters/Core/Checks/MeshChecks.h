@@ -65,7 +65,9 @@ ConformityReport MeasureConformity(const SimplexMesh& mesh);
 /// One-sided Hausdorff distances in voxel units between the continuous boundaries
 /// (voxel faces / mesh boundary triangles; pixel edges / segments in 2D),
 /// computed by branch and bound (HausdorffDistance.cxx). Values are upper bounds
-/// on the exact distances, tight to `tolerance` (a depth and work limit per
+/// on the exact distances, tight to `tolerance` (by default 1/1024 voxel: a
+/// decimated mesh reaches its bounds, and a coarser figure would read as a
+/// violation of a bound that holds; a depth and work limit per
 /// direction bounds the refinement; past it a value stays an upper bound but may
 /// be less tight). Both values are +infinity when exactly one of the two
 /// boundaries is empty; both 0 when both are.
@@ -80,7 +82,7 @@ struct HausdorffReport
   std::map<std::int32_t, DistanceReport> PerMaterial; ///< every non-zero label of image or mesh
 };
 HausdorffReport MeasureHausdorff(
-  const LabelImage& image, const SimplexMesh& mesh, double tolerance = 1.0 / 64.0);
+  const LabelImage& image, const SimplexMesh& mesh, double tolerance = 1.0 / 1024.0);
 /// Rigorous yes/no: true only if h(I, M) <= imageToMesh and h(M, I) <= meshToImage
 /// hold exactly (up to 1e-9 for round-off), overall and for every material.
 /// Conservative: an element the branch and bound cannot decide within its depth

@@ -322,18 +322,21 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
     if (!mesh.CellsOf[v].empty())
       shared.Key[v] = ShortestEdge(mesh, v);
-  std::vector<VertexId> order;
-  for (std::size_t v = 0; v < mesh.Position.size(); ++v)
-    if (!mesh.CellsOf[v].empty())
-      order.push_back(static_cast<VertexId>(v));
+  // The alive vertices in Morton order (the octree's, as p4est partitions it).
   std::vector<std::uint64_t> keys(mesh.Position.size());
-  for (VertexId v : order)
+  for (std::size_t v = 0; v < mesh.Position.size(); ++v)
     keys[v] = Morton(mesh.Position[v], mesh.BoxLow);
-  std::sort(order.begin(), order.end(), [&](VertexId x, VertexId y) { return keys[x] < keys[y] || (keys[x] == keys[y] && x < y); });
-  const std::size_t regions = std::max<std::size_t>(1, order.size() / kDecimationRegionVertices);
+  auto aliveInMortonOrder = [&] {
+    std::vector<VertexId> order;
+    for (std::size_t v = 0; v < mesh.Position.size(); ++v)
+      if (!mesh.CellsOf[v].empty())
+        order.push_back(static_cast<VertexId>(v));
+    std::sort(order.begin(), order.end(), [&](VertexId x, VertexId y) { return keys[x] < keys[y] || (keys[x] == keys[y] && x < y); });
+    return order;
+  };
   shared.Region.assign(mesh.Position.size(), -1);
 
-  const double total = static_cast<double>(order.size());
+  const double total = static_cast<double>(result.Counts.VerticesBefore);
   // Offers are counted per thread and published every 1024; only the
   // calling thread (0) talks to the observer.
   auto tickFor = [&](unsigned thread, double start, double share) {
@@ -349,19 +352,22 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
     };
   };
 
-  // One parallel pass: the Morton order cut into `regions` runs, the cuts
-  // moved by `shift` (a fraction of a run), each run decimated on its own
-  // with its border frozen. Offers the vertices of `offered` (all, or those
-  // a border held back before); returns those a border holds back now.
-  auto regionPass = [&](const std::vector<std::uint8_t>& offered, double shift, double start, double share) {
+  // One pass over the vertices flagged in `offered`: the alive vertices, in
+  // Morton order, cut into runs of kDecimationRegionVertices with the cuts
+  // moved by `shift` (a fraction of a run); each run decimated on its own,
+  // on any core, with its border frozen (one run: no border, one thread).
+  // Returns the vertices a border held back.
+  auto pass = [&](const std::vector<std::uint8_t>& offered, double shift, bool oneRun, double start, double share) {
+    const std::vector<VertexId> order = aliveInMortonOrder();
     const std::size_t n = order.size();
+    const std::size_t regions = oneRun ? 1 : std::max<std::size_t>(1, n / kDecimationRegionVertices);
     const std::size_t offset = static_cast<std::size_t>(shift * n / regions);
-    // Run r holds positions [runStart(r), runStart(r + 1)) of the shifted order;
-    // the same bounds decide membership and what a run queues.
+    // Run r holds positions [runStart(r), runStart(r + 1)) of the shifted
+    // order; the same bounds decide membership and what a run queues.
     auto runStart = [&](std::size_t r) { return r * n / regions; };
     for (std::size_t r = 0; r < regions; ++r)
       for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
-        shared.Region[order[(i + offset) % n]] = static_cast<std::int32_t>(r);
+        shared.Region[order[(i + offset) % n]] = regions > 1 ? static_cast<std::int32_t>(r) : -1;
     std::vector<std::vector<VertexId>> held(regions);
     std::vector<DecimationCounts> counts(regions);
     shared.Offered = 0;
@@ -375,11 +381,11 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
         for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
         {
           const VertexId v = order[(i + offset) % n];
-          if (offered[v] && !frozen[v] && !mesh.CellsOf[v].empty())
+          if (offered[v] && !frozen[v])
             queue.Push(v, shared.Key[v]);
         }
         worker.Counts = {};
-        OfferVertices(shared, worker, queue, static_cast<std::int32_t>(r), held[r], tick);
+        OfferVertices(shared, worker, queue, regions > 1 ? static_cast<std::int32_t>(r) : -1, held[r], tick);
         counts[r] = worker.Counts;
       }
     });
@@ -390,28 +396,21 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
     for (const auto& list : held)
       for (VertexId v : list)
         next[v] = 1;
-    return next;
+    return std::make_pair(next, regions);
   };
 
-  // Pass 1: every vertex; pass 2: what its borders held back, with the cuts
-  // moved half a run, so that the old borders lie inside the new runs; pass
-  // 3: what remains, on one thread.
-  std::vector<std::uint8_t> held = regionPass(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.0, 0.1, 0.7);
+  // Pass 1 offers every vertex; passes 2 and 3 what the borders held back,
+  // cut afresh from the vertices left (the mesh is coarser: as many vertices
+  // per run cover more of it) with the cuts moved by half and a quarter run,
+  // so that old borders lie inside the new runs; the last pass, on one
+  // thread, whatever is still held.
+  auto [held, regions] = pass(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.0, false, 0.1, 0.7);
+  const double shifts[] = { 0.5, 0.25 };
+  for (int k = 0; k < 2 && regions > 1; ++k)
+    std::tie(held, regions) = pass(held, shifts[k], false, 0.8 + 0.05 * k, 0.05);
   if (regions > 1)
-    held = regionPass(held, 0.5, 0.8, 0.08);
-  clock.Finish("decimation regions");
-  {
-    shared.Offered = 0;
-    Worker worker(shared, boundary);
-    MergeQueue queue(parameters.Order, shared.Stamps);
-    std::vector<VertexId> none;
-    for (VertexId v : order)
-      if (held[v] && !mesh.CellsOf[v].empty())
-        queue.Push(v, shared.Key[v]);
-    OfferVertices(shared, worker, queue, -1, none, tickFor(0, 0.88, 0.07));
-    Add(result.Counts, worker.Counts);
-  }
-  clock.Finish("decimation borders");
+    pass(held, 0.0, true, 0.9, 0.05);
+  clock.Finish("decimation");
 
   if (!observer.Report("decimation output", 0.95))
     throw AbortRequested{};

@@ -11,52 +11,78 @@ bool EdgeCollapse::CollectFaces(const EditableMesh& mesh, const std::vector<cons
 {
   // Every face of these cells that touches touchA or touchB has its other
   // cell among them too (that cell shares the vertex), or none: then it lies
-  // on the box. Sorting the uses pairs the two sides of each face.
+  // on the box. A small open-addressing table pairs the two sides of each face
+  // (a generation per slot saves clearing it).
   const int d = mesh.Dimension;
-  Uses.clear();
+  std::size_t size = 64;
+  while (size < 4 * (d + 1) * cells.size())
+    size *= 2;
+  if (Table.size() < size)
+  {
+    Table.assign(size, FaceSlot{});
+    Generation = 0;
+  }
+  if (++Generation == 0)
+  {
+    std::fill(Table.begin(), Table.end(), FaceSlot{});
+    Generation = 1;
+  }
+  const std::size_t mask = size - 1;
+  Used.clear();
   for (std::size_t c = 0; c < cells.size(); ++c)
   {
     const auto& cell = *cells[c];
     for (int skip = 0; skip <= d; ++skip)
     {
-      FaceUse use{ { -1, -1, -1 }, labels[c] };
+      std::array<VertexId, 3> face{ -1, -1, -1 };
       int n = 0;
       bool touches = false;
       for (int i = 0; i <= d; ++i)
         if (i != skip)
         {
-          use.Vertices[n++] = cell[i];
+          face[n++] = cell[i];
           touches = touches || cell[i] == touchA || cell[i] == touchB;
         }
       if (!touches)
         continue;
-      std::sort(use.Vertices.begin(), use.Vertices.begin() + n);
-      Uses.push_back(use);
+      std::sort(face.begin(), face.begin() + n);
+      std::size_t h = (static_cast<std::size_t>(face[0]) * 73856093u) ^ (static_cast<std::size_t>(face[1]) * 19349663u) ^
+        (static_cast<std::size_t>(face[2] + 1) * 83492791u);
+      for (h &= mask;; h = (h + 1) & mask)
+      {
+        FaceSlot& slot = Table[h];
+        if (slot.Generation != Generation)
+        {
+          slot = FaceSlot{ face, labels[c], 0, 1, Generation };
+          Used.push_back(static_cast<std::uint32_t>(h));
+          break;
+        }
+        if (slot.Vertices == face)
+        {
+          if (++slot.Count > 2)
+            return false;
+          slot.Other = labels[c];
+          break;
+        }
+      }
     }
   }
-  std::sort(Uses.begin(), Uses.end());
   out.clear();
-  for (std::size_t u = 0; u < Uses.size();)
+  for (std::uint32_t h : Used)
   {
-    std::size_t w = u + 1;
-    while (w < Uses.size() && Uses[w].Vertices == Uses[u].Vertices)
-      ++w;
-    if (w - u > 2)
-      return false;
-    std::int32_t other;
-    if (w - u == 2)
-      other = Uses[u + 1].Label;
-    else
+    const FaceSlot& slot = Table[h];
+    std::int32_t other = slot.Other;
+    if (slot.Count == 1)
     {
-      const int plane = mesh.OutsidePlane(Uses[u].Vertices);
+      const int plane = mesh.OutsidePlane(slot.Vertices);
       if (plane < 0)
         return false;
       other = EditableMesh::OutsideLabel(plane);
     }
-    if (other != Uses[u].Label)
-      out.push_back(InterfaceFace{ Uses[u].Vertices, std::min(other, Uses[u].Label), std::max(other, Uses[u].Label) });
-    u = w;
+    if (other != slot.Label)
+      out.push_back(InterfaceFace{ slot.Vertices, std::min(other, slot.Label), std::max(other, slot.Label) });
   }
+  std::sort(out.begin(), out.end());
   return true;
 }
 

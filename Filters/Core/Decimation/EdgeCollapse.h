@@ -48,13 +48,16 @@ public:
 private:
   bool CollectFaces(const EditableMesh& mesh, const std::vector<const std::array<VertexId, 4>*>& cells,
     const std::vector<std::int32_t>& labels, VertexId touchA, VertexId touchB, std::vector<InterfaceFace>& out);
-  struct FaceUse
+  struct FaceSlot
   {
-    std::array<VertexId, 3> Vertices;
-    std::int32_t Label;
-    bool operator<(const FaceUse& o) const { return Vertices < o.Vertices; }
+    std::array<VertexId, 3> Vertices{ -1, -1, -1 };
+    std::int32_t Label = 0, Other = 0;
+    int Count = 0;
+    std::uint32_t Generation = 0;
   };
-  std::vector<FaceUse> Uses; // scratch
+  std::vector<FaceSlot> Table; // scratch: faces by vertices
+  std::vector<std::uint32_t> Used;
+  std::uint32_t Generation = 0;
   std::vector<const std::array<VertexId, 4>*> CellScratch;
   std::vector<std::int32_t> LabelScratch;
 };

@@ -91,6 +91,8 @@ struct Worker
   DecimationCounts Counts;
   std::vector<VertexId> Neighbours;
   std::vector<std::pair<std::int64_t, VertexId>> Targets;
+  std::vector<std::uint32_t> Seen; ///< per mesh vertex: the epoch NeighboursOf saw it in
+  std::uint32_t Epoch = 0;
 };
 
 std::int64_t SquaredLength(const EditableMesh& mesh, VertexId a, VertexId b)
@@ -104,15 +106,31 @@ std::int64_t SquaredLength(const EditableMesh& mesh, VertexId a, VertexId b)
   return s;
 }
 
-void NeighboursOf(const EditableMesh& mesh, VertexId v, std::vector<VertexId>& out)
+/// The neighbours of v, each once, in the order the cells around v give
+/// them (deterministic; stamps instead of a sort).
+void NeighboursOf(const EditableMesh& mesh, VertexId v, Worker& w, std::vector<VertexId>& out)
 {
+  if (w.Seen.size() != mesh.Position.size())
+  {
+    w.Seen.assign(mesh.Position.size(), 0u);
+    w.Epoch = 0;
+  }
+  if (++w.Epoch == 0)
+  {
+    std::fill(w.Seen.begin(), w.Seen.end(), 0u);
+    w.Epoch = 1;
+  }
   out.clear();
   for (CellId c : mesh.CellsOf[v])
     for (int i = 0; i < mesh.VerticesPerCell(); ++i)
-      if (mesh.Cells[c][i] != v)
-        out.push_back(mesh.Cells[c][i]);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+    {
+      const VertexId x = mesh.Cells[c][i];
+      if (x != v && w.Seen[x] != w.Epoch)
+      {
+        w.Seen[x] = w.Epoch;
+        out.push_back(x);
+      }
+    }
 }
 
 std::int64_t ShortestEdge(const EditableMesh& mesh, VertexId v)
@@ -173,7 +191,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     ++w.Counts.Offers;
     const bool interior = TopologyCheck::IsInterior(mesh, a);
     w.Quality.Prepare(mesh, a);
-    NeighboursOf(mesh, a, w.Neighbours);
+    NeighboursOf(mesh, a, w, w.Neighbours);
     w.Targets.clear();
     for (VertexId x : w.Neighbours)
       w.Targets.emplace_back(SquaredLength(mesh, a, x), x);
@@ -233,7 +251,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       // to b, so min(old key, |xb|) bounds its new shortest edge from below:
       // cheap to push, checked when popped. (Keying it by |xb| alone halves
       // the offers but leaves 40 % more cells.)
-      NeighboursOf(mesh, b, w.Neighbours);
+      NeighboursOf(mesh, b, w, w.Neighbours);
       for (VertexId x : w.Neighbours)
         if ((region < 0 || s.Region[x] == region) && !s.Frozen[x])
         {

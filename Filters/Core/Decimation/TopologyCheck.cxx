@@ -211,25 +211,13 @@ bool TopologyCheck::LinkCondition(VertexId a, VertexId b)
   }
   if (count >= 1023)
     return false; // too large to judge this way: refuse, never accept unproven
-  SortUnique(SA);
-  SortUnique(SB);
-  SortUnique(SAB);
-  // Lk(a) & Lk(b) must lie in Lk(ab).
-  std::size_t i = 0, j = 0;
-  while (i < SA.size() && j < SB.size())
-  {
-    if (SA[i] < SB[j])
-      ++i;
-    else if (SB[j] < SA[i])
-      ++j;
-    else
-    {
-      if (!std::binary_search(SAB.begin(), SAB.end(), SA[i]))
-        return false;
-      ++i;
-      ++j;
-    }
-  }
+  // Lk(a) & Lk(b) must lie in Lk(ab): every face of Lk(a) found in Lk(b)
+  // must be in Lk(ab) (repeats in Lk(a) only repeat the test).
+  std::sort(SB.begin(), SB.end());
+  std::sort(SAB.begin(), SAB.end());
+  for (std::uint32_t key : SA)
+    if (std::binary_search(SB.begin(), SB.end(), key) && !std::binary_search(SAB.begin(), SAB.end(), key))
+      return false;
   return true;
 }
 

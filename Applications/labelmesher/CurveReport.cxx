@@ -147,6 +147,8 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("image_to_mesh").Number(r.Linear.ImageToMeshBound);
   j.Key("mesh_to_image").Number(r.Linear.MeshToImageBound);
   j.EndObject();
+  j.Key("decimation");
+  WriteDecimationJson(r.Linear.Decimation, j);
   j.Key("linear_mesh").BeginObject();
   j.Key("cells").Integer(r.Linear.Cells);
   j.Key("minimum_angle_degrees");

@@ -208,6 +208,27 @@ void PrintSummary(const RunReport& r, std::ostream& out)
   out << "  " << std::left << std::setw(20) << "total" << std::right << FormatFixed(total, 3) << " s\n";
 }
 
+void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& j)
+{
+  if (!decimation)
+  {
+    j.Null();
+    return;
+  }
+  const DecimationEntry& d = *decimation;
+  j.BeginObject();
+  j.Key("minimum_angle_bound_degrees").Number(d.AngleBound);
+  j.Key("cells_before").Integer(d.CellsBefore);
+  j.Key("cells_after").Integer(d.CellsAfter);
+  j.Key("merges").Integer(d.Merges);
+  j.Key("merge_offers").Integer(d.Offers);
+  j.Key("rejected_by_quality").Integer(d.RejectedByQuality);
+  j.Key("rejected_by_topology").Integer(d.RejectedByTopology);
+  j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
+  j.Key("frozen_vertices").Integer(d.FrozenVertices);
+  j.EndObject();
+}
+
 void WriteJson(const RunReport& r, std::ostream& out)
 {
   JsonWriter j(out);
@@ -257,25 +278,7 @@ void WriteJson(const RunReport& r, std::ostream& out)
   j.EndObject();
   j.EndObject();
   j.Key("decimation");
-  if (r.Decimation)
-  {
-    const DecimationEntry& d = *r.Decimation;
-    j.BeginObject();
-    j.Key("minimum_angle_bound_degrees").Number(d.AngleBound);
-    j.Key("cells_before").Integer(d.CellsBefore);
-    j.Key("cells_after").Integer(d.CellsAfter);
-    j.Key("merges").Integer(d.Merges);
-    j.Key("merge_offers").Integer(d.Offers);
-    j.Key("rejected_by_quality").Integer(d.RejectedByQuality);
-    j.Key("rejected_by_topology").Integer(d.RejectedByTopology);
-    j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
-    j.Key("frozen_vertices").Integer(d.FrozenVertices);
-    j.EndObject();
-  }
-  else
-  {
-    j.Null();
-  }
+  WriteDecimationJson(r.Decimation, j);
   j.Key("measured").Bool(r.Measured());
   j.Key("quality").BeginObject();
   j.Key("angle_kind").String(r.MeshDimension == 3 ? "dihedral" : "planar");

@@ -27,6 +27,7 @@ namespace labelmesher_cli
 {
 
 struct Arguments;
+class JsonWriter;
 
 struct TopologyEntry
 {
@@ -86,6 +87,8 @@ RunReport MakeReport(
   const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
 void PrintSummary(const RunReport& report, std::ostream& out);
 void WriteJson(const RunReport& report, std::ostream& out);
+/// The report's "decimation" value: an object, or null with --no-decimate.
+void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& json);
 
 } // namespace labelmesher_cli
 

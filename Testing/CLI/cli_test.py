@@ -370,6 +370,7 @@ def case_curve_good_png():
         with open(report_file) as f:
             report = json.load(f)
         assert report["command"] == "curve"
+        assert report["decimation"] is None, "curve keeps the initial mesh unless --decimate"
         assert report["parameters"]["smoothness"] == int(smoothness)
         assert report["validity"]["valid"] is True and report["validity"]["invalid_cells"] == 0
         assert report["curved_mesh"]["cells"] == grid.GetNumberOfCells()
@@ -388,6 +389,16 @@ def case_curve_good_png():
             assert 0 < accuracy["misclassified_" + kind] < 0.05 * 48 * 40, accuracy
         print("OK: C" + smoothness, grid.GetNumberOfCells(), "cells, misclassified",
               accuracy["misclassified_linear"], "->", accuracy["misclassified_curved"])
+    result = run("curve", two_blobs_png("blobs.png"), "-o", path("decimated.vtu"),
+                 "--report", path("decimated.json"), "--decimate", "--min-angle", "20")
+    assert result.returncode == 0, result.stderr
+    with open(path("decimated.json")) as f:
+        report = json.load(f)
+    decimation = report["decimation"]
+    assert decimation["minimum_angle_bound_degrees"] == 20.0
+    assert decimation["cells_after"] == report["linear_mesh"]["cells"] < decimation["cells_before"]
+    assert report["validity"]["valid"] is True, report["validity"]
+    print("OK: decimated then curved,", decimation["cells_before"], "->", decimation["cells_after"])
 
 
 def case_curve_rejects_3d():
@@ -402,6 +413,8 @@ def case_curve_bad_options():
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "50"), "(0, 45] (2D)", 2)
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "20", "--no-decimate"),
                    "--no-decimate", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "20"), "only with --decimate", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--decimate", "--no-decimate"), "contradict", 2)
     expect_failure(run("mesh", png, "-o", path("out.vtu"), "--smoothness", "2"), "'curve' only", 2)
 
 

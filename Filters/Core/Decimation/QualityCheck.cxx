@@ -67,7 +67,7 @@ void QualityCheck::Prepare(const EditableMesh& mesh, VertexId from)
   const Lattice& a = mesh.Position[from];
   for (CellId c : mesh.CellsOf[from])
   {
-    Lattice q[3];
+    Lattice q[3] = {}; // q[2] unused in 2D
     int n = 0;
     for (int i = 0; i <= Dimension; ++i)
       if (mesh.Cells[c][i] != from)
@@ -112,27 +112,6 @@ bool QualityCheck::OrientationsHold(const EditableMesh& mesh, VertexId to) const
 bool QualityCheck::AnglesHold(const EditableMesh& mesh, const EdgeCollapse& merge) const
 {
   Lattice p[4];
-  for (const auto& cell : merge.MovedCells)
-  {
-    for (int i = 0; i <= Dimension; ++i)
-      p[i] = mesh.Position[cell[i]];
-    if (LargestCosine(Dimension, p) > CosineBound)
-      return false;
-  }
-  return true;
-}
-
-bool QualityCheck::Accepts(const EditableMesh& mesh, const EdgeCollapse& merge) const
-{
-  // Orientation first, on all cells: exact integers, cheaper than angles.
-  Lattice p[4];
-  for (const auto& cell : merge.MovedCells)
-  {
-    for (int i = 0; i <= Dimension; ++i)
-      p[i] = mesh.Position[cell[i]];
-    if (EditableMesh::Orientation(Dimension, p) <= 0)
-      return false;
-  }
   for (const auto& cell : merge.MovedCells)
   {
     for (int i = 0; i <= Dimension; ++i)

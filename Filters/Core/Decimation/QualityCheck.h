@@ -36,8 +36,6 @@ public:
   /// Every moved cell of the planned merge has no angle below the bound (the
   /// cells that stay are unchanged); call after OrientationsHold.
   bool AnglesHold(const EditableMesh& mesh, const EdgeCollapse& merge) const;
-  /// Both: every moved cell positively oriented, no angle below the bound.
-  bool Accepts(const EditableMesh& mesh, const EdgeCollapse& merge) const;
 
   /// The smallest angle (degrees) of the cell with these lattice points.
   static double SmallestAngle(int dimension, const Lattice* points);

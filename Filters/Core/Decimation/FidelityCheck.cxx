@@ -27,18 +27,8 @@ bool FidelityCheck::FaceWithinBound(const EditableMesh& mesh, const InterfaceFac
   if (!ImagePair(face, low, high))
     return true; // background against the box: not part of any material's boundary
   const ConvexPiece piece = MeshFacePiece(mesh, face.Vertices);
-  Point3 lo = piece.Points[0], hi = piece.Points[0];
-  for (int i = 1; i < piece.Count; ++i)
-    for (int a = 0; a < 3; ++a)
-    {
-      lo[a] = std::min(lo[a], piece.Points[i][a]);
-      hi[a] = std::max(hi[a], piece.Points[i][a]);
-    }
-  for (int a = 0; a < 3; ++a)
-  {
-    lo[a] -= H + 1e-6;
-    hi[a] += H + 1e-6;
-  }
+  Point3 lo, hi;
+  BoxAround(piece, H + 1e-6, lo, hi);
   Pieces.clear();
   Boundary.Pieces(lo, hi, low, high, Pieces);
   return WithinDistance(piece, Pieces, H);

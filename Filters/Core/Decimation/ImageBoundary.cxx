@@ -8,6 +8,22 @@
 namespace labelmesher
 {
 
+void BoxAround(const ConvexPiece& piece, double margin, Point3& lo, Point3& hi)
+{
+  lo = hi = piece.Points[0];
+  for (int i = 1; i < piece.Count; ++i)
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], piece.Points[i][a]);
+      hi[a] = std::max(hi[a], piece.Points[i][a]);
+    }
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] -= margin;
+    hi[a] += margin;
+  }
+}
+
 ImageBoundary::ImageBoundary(const LabelImage& image)
   : Dimension(image.Dimension())
 {

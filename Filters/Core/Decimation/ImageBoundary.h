@@ -21,6 +21,9 @@
 namespace labelmesher
 {
 
+/// The axis-aligned box of `piece`, grown by `margin` on every side.
+void BoxAround(const ConvexPiece& piece, double margin, Point3& lo, Point3& hi);
+
 class ImageBoundary
 {
 public:

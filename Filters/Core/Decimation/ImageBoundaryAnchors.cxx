@@ -184,18 +184,8 @@ void ImageBoundaryAnchors::Initialize(
     for (std::size_t item = begin; item < end; ++item)
     {
       const ConvexPiece image = Boundary.Piece(static_cast<std::size_t>(ItemFace[item]));
-      Point3 lo = image.Points[0], hi = image.Points[0];
-      for (int c = 1; c < image.Count; ++c)
-        for (int a = 0; a < 3; ++a)
-        {
-          lo[a] = std::min(lo[a], image.Points[c][a]);
-          hi[a] = std::max(hi[a], image.Points[c][a]);
-        }
-      for (int a = 0; a < 3; ++a)
-      {
-        lo[a] -= H + 1e-6;
-        hi[a] += H + 1e-6;
-      }
+      Point3 lo, hi;
+      BoxAround(image, H + 1e-6, lo, hi);
       grid.Query(lo, hi, near);
       candidates.clear();
       for (std::uint32_t f : near)

@@ -51,17 +51,6 @@ void Validate(const LabelImage& image, const MesherParameters& parameters)
     throw std::invalid_argument("the image has no foreground (every label is 0)");
 }
 
-int DepthFor(const LabelImage& image)
-{
-  int largest = std::max(image.Dimensions[0], image.Dimensions[1]);
-  if (image.Dimension() == 3)
-    largest = std::max(largest, image.Dimensions[2]);
-  int depth = 1;
-  while ((1 << depth) < largest)
-    ++depth;
-  return depth;
-}
-
 } // namespace
 
 MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& parameters, const ProgressObserver& observer)
@@ -70,7 +59,7 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
   MesherResult result;
   StageClock clock(result.Timings);
   const int dimension = image.Dimension();
-  const int depth = DepthFor(image);
+  const int depth = OctreeDepth(image);
 
   if (!observer.Report("label pyramid", 0.0))
     throw AbortRequested{};

@@ -8,6 +8,7 @@
 // and 3D, sides that are not powers of two, several seeds).
 
 #include "Octree/LabelPyramid.h"
+#include "Octree/OctreeRefinement.h"
 #include "RandomLabelImages.h"
 
 #include <gtest/gtest.h>
@@ -47,16 +48,6 @@ std::string Text(const LabelSummary& s)
   return out.str();
 }
 
-int DepthFor(const LabelImage& image)
-{
-  int largest = std::max(image.Dimensions[0], image.Dimensions[1]);
-  if (image.Dimension() == 3)
-    largest = std::max(largest, image.Dimensions[2]);
-  int depth = 1;
-  while ((1 << depth) < largest)
-    ++depth;
-  return depth;
-}
 
 struct Tally
 {
@@ -165,7 +156,7 @@ TEST(LabelPyramid, EveryBlockOfRandom2DImagesMatchesABruteForceCount)
   for (std::uint64_t seed = 1; seed <= 12; ++seed)
   {
     const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(700 + seed, 2);
-    const int depth = DepthFor(random.Image);
+    const int depth = OctreeDepth(random.Image);
     for (int extra : { 0, 1 }) // the mesher's depth, and one more (blocks wholly outside)
     {
       const Tally t = CompareEveryBlock(random.Image, depth + extra, "smooth 2D seed " + std::to_string(700 + seed));
@@ -175,7 +166,7 @@ TEST(LabelPyramid, EveryBlockOfRandom2DImagesMatchesABruteForceCount)
     // Box images: flat interfaces, two labels and background; sides 13..35.
     const int side = 13 + 2 * static_cast<int>(seed);
     const LabelImage boxes = testing::GenerateRandomBoxImage(seed, 2, side).Image;
-    const Tally t = CompareEveryBlock(boxes, DepthFor(boxes), "box 2D seed " + std::to_string(seed));
+    const Tally t = CompareEveryBlock(boxes, OctreeDepth(boxes), "box 2D seed " + std::to_string(seed));
     for (int kind = 0; kind < 3; ++kind)
       total.Kinds[kind] += t.Kinds[kind];
     if (HasFailure())
@@ -193,11 +184,11 @@ TEST(LabelPyramid, EveryBlockOfRandom3DImagesMatchesABruteForceCount)
   for (std::uint64_t seed = 1; seed <= 6; ++seed)
   {
     const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(900 + seed, 3);
-    const int depth = DepthFor(random.Image);
+    const int depth = OctreeDepth(random.Image);
     const Tally t = CompareEveryBlock(random.Image, depth, "smooth 3D seed " + std::to_string(900 + seed));
     const int side = 7 + 2 * static_cast<int>(seed); // 9..19
     const LabelImage boxes = testing::GenerateRandomBoxImage(seed, 3, side).Image;
-    const Tally b = CompareEveryBlock(boxes, DepthFor(boxes) + 1, "box 3D seed " + std::to_string(seed));
+    const Tally b = CompareEveryBlock(boxes, OctreeDepth(boxes) + 1, "box 3D seed " + std::to_string(seed));
     for (int kind = 0; kind < 3; ++kind)
       total.Kinds[kind] += t.Kinds[kind] + b.Kinds[kind];
     if (HasFailure())
@@ -220,7 +211,7 @@ TEST(LabelPyramid, EveryBlockOfLabelNoiseMatchesABruteForceCount)
     const int labels = 1 + static_cast<int>(random.Int(1, 3));
     for (std::int32_t& l : image.Labels)
       l = random.Chance(0.7) ? 4 : static_cast<std::int32_t>(random.Int(0, labels));
-    CompareEveryBlock(image, DepthFor(image) + 1,
+    CompareEveryBlock(image, OctreeDepth(image) + 1,
       "noise " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
   }
 }

@@ -5,6 +5,7 @@
 #include <p4est_base.h>
 #include <sc.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 
@@ -37,6 +38,17 @@ void EnsureMPIInitialized()
 }
 
 } // namespace detail
+
+int OctreeDepth(const LabelImage& image)
+{
+  int largest = std::max(image.Dimensions[0], image.Dimensions[1]);
+  if (image.Dimension() == 3)
+    largest = std::max(largest, image.Dimensions[2]);
+  int depth = 1;
+  while ((1 << depth) < largest)
+    ++depth;
+  return depth;
+}
 
 std::vector<OctreeLeaf> BuildOctree(int dimension, int depth, const LeafEvaluator& evaluate,
   const ProgressObserver& observer, double progressStart, double progressEnd)

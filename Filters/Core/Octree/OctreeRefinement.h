@@ -22,6 +22,7 @@
  */
 
 #include "Octree/LeafBox.h"
+#include "Support/LabelImage.h"
 #include "Support/ProgressObserver.h"
 
 #include <functional>
@@ -40,6 +41,10 @@ struct LeafVerdict
   std::uint8_t RigidFaces = 0;
 };
 using LeafEvaluator = std::function<LeafVerdict(const LeafBox&)>;
+
+/// The depth of the octree over `image`: the smallest d with 2^d voxels a
+/// side covering the image (at least 1).
+int OctreeDepth(const LabelImage& image);
 
 /// Builds the octree (dimension 3) or quadtree (dimension 2) over a cube of
 /// 2^depth voxels a side and returns its leaves, with the midpoints and split

@@ -7,6 +7,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace labelmesher
 {
@@ -33,6 +35,30 @@ ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start, double s
     return !algorithm->GetAbortExecute();
   };
   return observer;
+}
+
+vtkDataArray* MaterialArray(vtkUnstructuredGrid* mesh, std::string& error)
+{
+  vtkDataArray* materials = mesh->GetCellData()->GetArray(arrays::Material);
+  if (!materials || materials->GetNumberOfComponents() != 1)
+  {
+    error = "Input mesh has no one-component cell array 'Material'.";
+    return nullptr;
+  }
+  return materials;
+}
+
+bool CellMaterial(vtkDataArray* materials, vtkIdType c, std::int32_t& label, std::string& error)
+{
+  const double value = materials->GetComponent(c, 0);
+  if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
+  {
+    error = "Input cell " + std::to_string(c) + " has Material " + std::to_string(value) +
+      ": expected a non-negative integer label.";
+    return false;
+  }
+  label = static_cast<std::int32_t>(value);
+  return true;
 }
 
 void RequestWholeImages(vtkInformationVector* port)

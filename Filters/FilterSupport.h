@@ -29,6 +29,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkDataArray;
 class vtkInformationVector;
 class vtkPolyData;
 class vtkUnstructuredGrid;
@@ -44,6 +45,13 @@ ProgressObserver ForwardProgress(vtkAlgorithm* algorithm, double start = 0.0, do
 /// Asks for the whole extent of every image on `port`'s connections: the
 /// filters mesh whole label images, whatever piece or extent downstream asks for.
 void RequestWholeImages(vtkInformationVector* port);
+
+/// The one-component cell array `Material` of `mesh`, or null with a sentence
+/// in `error`.
+vtkDataArray* MaterialArray(vtkUnstructuredGrid* mesh, std::string& error);
+/// The Material of cell `c` as a label (a non-negative integer that fits 32
+/// bits), or false with a sentence in `error`.
+bool CellMaterial(vtkDataArray* materials, vtkIdType c, std::int32_t& label, std::string& error);
 
 /// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity.
 vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell);

@@ -123,10 +123,9 @@ bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher:
     error = "Input mesh has no cells: nothing to curve.";
     return false;
   }
-  vtkDataArray* materials = input->GetCellData()->GetArray(arrays::Material);
-  if (!materials || materials->GetNumberOfComponents() != 1)
+  vtkDataArray* materials = labelmesher::MaterialArray(input, error);
+  if (!materials)
   {
-    error = "Input mesh has no one-component cell array 'Material'.";
     return false;
   }
   if (!FindAxisPlane(input->GetPoints(), plane))
@@ -150,11 +149,9 @@ bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher:
         std::to_string(input->GetCellType(c)) + "): the curver needs triangles.";
       return false;
     }
-    const double value = materials->GetComponent(c, 0);
-    if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
+    std::int32_t label;
+    if (!labelmesher::CellMaterial(materials, c, label, error))
     {
-      error = "Input cell " + std::to_string(c) + " has Material " + std::to_string(value) +
-        ": expected a non-negative integer label.";
       return false;
     }
     vtkIdType n;
@@ -170,7 +167,7 @@ bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher:
       std::swap(v[1], v[2]);
     }
     linear.Connectivity.insert(linear.Connectivity.end(), v.begin(), v.end());
-    linear.Materials.push_back(static_cast<std::int32_t>(value));
+    linear.Materials.push_back(label);
   }
   return true;
 }

@@ -49,10 +49,9 @@ bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& p
     error = "Input mesh has no cells: nothing to decimate.";
     return false;
   }
-  vtkDataArray* materials = input->GetCellData()->GetArray(arrays::Material);
-  if (!materials || materials->GetNumberOfComponents() != 1)
+  vtkDataArray* materials = labelmesher::MaterialArray(input, error);
+  if (!materials)
   {
-    error = "Input mesh has no one-component cell array 'Material'.";
     return false;
   }
   const int type = dimension == 3 ? VTK_TETRA : VTK_TRIANGLE;
@@ -89,11 +88,9 @@ bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& p
         " image on port 1 needs.";
       return false;
     }
-    const double value = materials->GetComponent(c, 0);
-    if (!(value >= 0 && value == std::floor(value) && value <= VTK_INT_MAX))
+    std::int32_t label;
+    if (!labelmesher::CellMaterial(materials, c, label, error))
     {
-      error = "Input cell " + std::to_string(c) + " has Material " + std::to_string(value) +
-        ": expected a non-negative integer label.";
       return false;
     }
     vtkIdType n;
@@ -123,7 +120,7 @@ bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& p
       std::swap(v[1], v[2]);
     }
     mesh.Connectivity.insert(mesh.Connectivity.end(), v, v + nv);
-    mesh.Materials.push_back(static_cast<std::int32_t>(value));
+    mesh.Materials.push_back(label);
   }
   return true;
 }

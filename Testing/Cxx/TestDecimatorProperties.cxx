@@ -53,6 +53,21 @@ void CheckGuarantees(const testing::RandomLabelImage& random, DecimationCounts* 
                                 << random.Describe();
 }
 
+/// `images` images from `generate(seed)`, seeds from `first` on; the
+/// decimator must also decimate (the guarantees alone would hold for a copy).
+template <typename Generate>
+void CheckShard(std::uint64_t first, int images, Generate&& generate)
+{
+  DecimationCounts total;
+  for (int i = 0; i < images; ++i)
+  {
+    CheckGuarantees(generate(first + static_cast<std::uint64_t>(i)), &total);
+    if (::testing::Test::HasFailure())
+      return;
+  }
+  EXPECT_LT(total.CellsAfter * 2, total.CellsBefore);
+}
+
 class DecimatorProperties : public ::testing::TestWithParam<Shard>
 {
 };
@@ -61,16 +76,8 @@ TEST_P(DecimatorProperties, AngleConformityHausdorffAndTopologyHold)
 {
   const Shard shard = GetParam();
   const int images = shard.Dimension == 3 ? 25 : 100;
-  DecimationCounts total;
-  for (int i = 0; i < images; ++i)
-  {
-    const std::uint64_t seed = 500000u + 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images + i;
-    CheckGuarantees(testing::GenerateRandomLabelImageWithDescription(seed, shard.Dimension), &total);
-    if (HasFailure())
-      return;
-  }
-  // The decimator must decimate: the guarantees alone would hold for a copy.
-  EXPECT_LT(total.CellsAfter * 2, total.CellsBefore);
+  CheckShard(500000u + 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images, images,
+    [&](std::uint64_t seed) { return testing::GenerateRandomLabelImageWithDescription(seed, shard.Dimension); });
 }
 
 class DecimatorBoxImageProperties : public ::testing::TestWithParam<Shard>
@@ -81,15 +88,8 @@ TEST_P(DecimatorBoxImageProperties, AngleConformityHausdorffAndTopologyHold)
 {
   const Shard shard = GetParam();
   const int images = shard.Dimension == 3 ? 25 : 250;
-  DecimationCounts total;
-  for (int i = 0; i < images; ++i)
-  {
-    const std::uint64_t seed = 700000u + 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images + i;
-    CheckGuarantees(testing::GenerateRandomBoxImage(seed, shard.Dimension, shard.Dimension == 3 ? 14 : 24), &total);
-    if (HasFailure())
-      return;
-  }
-  EXPECT_LT(total.CellsAfter * 2, total.CellsBefore);
+  CheckShard(700000u + 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images, images,
+    [&](std::uint64_t seed) { return testing::GenerateRandomBoxImage(seed, shard.Dimension, shard.Dimension == 3 ? 14 : 24); });
 }
 
 std::vector<Shard> Shards(int dimension, int count)

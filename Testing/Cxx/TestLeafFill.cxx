@@ -12,6 +12,7 @@
 
 #include "Checks/MeshChecks.h"
 #include "Fill/LeafFill.h"
+#include "HandMadeImages.h"
 #include "Fill/MeshAssembler.h"
 #include "MesherGuarantees.h"
 #include "Octree/LeafBox.h"
@@ -178,24 +179,8 @@ Point3 Low(const LeafBox& box)
   return { box.Origin[0] - 0.5, box.Origin[1] - 0.5, box.Dimension == 2 ? 0.0 : box.Origin[2] - 0.5 };
 }
 
-LabelImage Volume(int n, const std::function<std::int32_t(int, int, int)>& label)
-{
-  LabelImage image(n, n, n);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        image(i, j, k) = label(i, j, k);
-  return image;
-}
-
-LabelImage Plane(int nx, int ny, const std::function<std::int32_t(int, int)>& label)
-{
-  LabelImage image(nx, ny, 1);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      image(i, j, 0) = label(i, j);
-  return image;
-}
+using testing::Plane;
+using testing::Volume;
 
 const LabelImage kEmpty3D(16, 16, 16), kEmpty2D(16, 16, 1);
 

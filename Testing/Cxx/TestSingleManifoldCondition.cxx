@@ -16,6 +16,7 @@
 
 #include "Criteria/LeafFidelity.h"
 #include "Criteria/SingleManifoldCondition.h"
+#include "HandMadeImages.h"
 #include "RandomLabelImages.h"
 
 #include <gtest/gtest.h>
@@ -31,31 +32,8 @@ namespace labelmesher
 namespace
 {
 
-/// A 2D image drawn as text: rows[0] is the top row (largest j), '.' is label
-/// 0, a digit is that label.
-LabelImage Picture(const std::vector<std::string>& rows)
-{
-  const int ny = static_cast<int>(rows.size()), nx = static_cast<int>(rows[0].size());
-  LabelImage image(nx, ny, 1);
-  for (int j = 0; j < ny; ++j)
-  {
-    const std::string& row = rows[ny - 1 - j];
-    EXPECT_EQ(static_cast<int>(row.size()), nx) << "row " << j;
-    for (int i = 0; i < nx; ++i)
-      image(i, j, 0) = row[i] == '.' ? 0 : row[i] - '0';
-  }
-  return image;
-}
-
-LabelImage Volume(int n, const std::function<std::int32_t(int, int, int)>& label)
-{
-  LabelImage image(n, n, n);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        image(i, j, k) = label(i, j, k);
-  return image;
-}
+using testing::Picture;
+using testing::Volume;
 
 LeafBox Square(int x, int y, int size) { return LeafBox{ { x, y, 0 }, size, 2 }; }
 LeafBox Cube(int x, int y, int z, int size) { return LeafBox{ { x, y, z }, size, 3 }; }

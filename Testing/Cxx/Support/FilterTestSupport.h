@@ -59,6 +59,17 @@ inline std::vector<int> MakeDiscSliceXZ(int n, double radius)
   return labels;
 }
 
+/// int point scalars "Labels" of `image`, from `labels` (x fastest).
+inline void SetLabels(vtkImageData* image, const std::vector<int>& labels)
+{
+  vtkNew<vtkIntArray> scalars;
+  scalars->SetName("Labels");
+  scalars->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    scalars->SetValue(static_cast<vtkIdType>(v), labels[v]);
+  image->GetPointData()->SetScalars(scalars);
+}
+
 /// A cube image of side cbrt(labels.size()) (or an n x 1 x n slice when the
 /// size is a square, not a cube) with int point scalars "Labels".
 inline vtkSmartPointer<vtkImageData> MakeVtkImage(const std::vector<int>& labels,
@@ -73,26 +84,16 @@ inline vtkSmartPointer<vtkImageData> MakeVtkImage(const std::vector<int>& labels
     image->SetDimensions(square, 1, square);
   image->SetSpacing(spacing.data());
   image->SetOrigin(origin.data());
-  vtkNew<vtkIntArray> scalars;
-  scalars->SetName("Labels");
-  scalars->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
-  for (std::size_t v = 0; v < labels.size(); ++v)
-    scalars->SetValue(static_cast<vtkIdType>(v), labels[v]);
-  image->GetPointData()->SetScalars(scalars);
+  SetLabels(image, labels);
   return image;
 }
 
-/// The same image with an explicit single-slice size (x by y), for 2D cases in the x-y plane.
+/// The same with an explicit single-slice size (x by y), for 2D cases in the x-y plane.
 inline vtkSmartPointer<vtkImageData> MakeVtkImage2D(const std::vector<int>& labels, int nx, int ny)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(nx, ny, 1);
-  vtkNew<vtkIntArray> scalars;
-  scalars->SetName("Labels");
-  scalars->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
-  for (std::size_t v = 0; v < labels.size(); ++v)
-    scalars->SetValue(static_cast<vtkIdType>(v), labels[v]);
-  image->GetPointData()->SetScalars(scalars);
+  SetLabels(image, labels);
   return image;
 }
 

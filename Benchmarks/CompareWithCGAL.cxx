@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // labelmesher_compare_cgal: meshes one label image with CGAL 5.5 Mesh_3
 // (labelled image domain, every connected component seeded, fixed random seed)
-// and with MeshLabelImage (h(I,M) = h(M,I) = 2), measures both meshes with the
-// same checks (MeshChecks.h) in the same index space, and prints them side by
-// side with ratios ours/CGAL. See Benchmarks/README.md.
+// and with LabelMesher's whole pipeline, MeshLabelImage then DecimateMesh
+// (h(I,M) = h(M,I) = 2, 15 degrees), measures both meshes with the same checks
+// (MeshChecks.h) in the same index space, and prints them side by side with
+// ratios ours/CGAL, peak memory included. Reading and writing files are left
+// out on both sides (as the dissertation's timings leave them out). See
+// Benchmarks/README.md.
 //
 //   labelmesher_compare_cgal [options] (FILE.nrrd | --cassini N)
 //     --facet-distance D  CGAL facet_distance in voxels          (1)
@@ -15,11 +18,15 @@
 //     --no-seeding        CGAL: its default random initial points
 //     --seed S            CGAL::get_default_random() = CGAL::Random(S)   (0)
 //     --h H               our h(I,M) = h(M,I) in voxels            (2)
+//     --min-angle DEG     our decimation angle in degrees         (15)
+//     --no-decimate       ours: the initial mesh only
 //     --name NAME         label for the SUMMARY line
 // The last line is machine-readable:
 //   SUMMARY name t_ours t_cgal cells_ours cells_cgal mindih_ours mindih_cgal
-//           hIM_ours hIM_cgal hMI_ours hMI_cgal topo_ours topo_cgal
+//           hIM_ours hIM_cgal hMI_ours hMI_cgal topo_ours topo_cgal peakMiB_ours peakMiB_cgal
+#include "BenchmarkSupport.h"
 #include "CGALImageMesher.h"
+#include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
 #include "Checks/MeshChecks.h"
 #include "SyntheticShapes.h"
@@ -45,6 +52,7 @@ namespace
 struct Measured
 {
   double Seconds = 0.0;
+  double PeakMiB = 0.0; ///< resident memory at the peak, less what the process held before
   std::vector<std::pair<std::string, double>> Timings;
   std::size_t Cells = 0;    ///< foreground cells (label != 0)
   std::size_t Vertices = 0; ///< vertices used by foreground cells
@@ -126,7 +134,7 @@ void Row(const std::string& what, const std::string& ours, const std::string& cg
   std::fprintf(stderr,
     "error: %s\nusage: labelmesher_compare_cgal [--facet-distance D] [--facet-size S] [--cell-size S]\n"
     "  [--facet-angle A] [--cell-ratio R] [--no-optimise] [--no-seeding] [--seed S] [--h H]\n"
-    "  [--name NAME] (FILE.nrrd | --cassini N)\n",
+    "  [--min-angle DEG] [--no-decimate] [--name NAME] (FILE.nrrd | --cassini N)\n",
     message);
   std::exit(2);
 }
@@ -136,7 +144,8 @@ void Row(const std::string& what, const std::string& ours, const std::string& cg
 int main(int argc, char** argv)
 {
   benchmarks::CGALMeshOptions cgal;
-  double h = 2.0;
+  double h = 2.0, minimumAngle = 15.0;
+  bool decimate = true;
   int cassini = 0;
   std::string file, name;
   for (int a = 1; a < argc; ++a)
@@ -165,6 +174,10 @@ int main(int argc, char** argv)
       cgal.Seed = static_cast<unsigned>(value());
     else if (arg == "--h")
       h = value();
+    else if (arg == "--min-angle")
+      minimumAngle = value();
+    else if (arg == "--no-decimate")
+      decimate = false;
     else if (arg == "--cassini")
       cassini = static_cast<int>(value());
     else if (arg == "--name")
@@ -208,7 +221,10 @@ int main(int argc, char** argv)
     ++voxelsPerLabel[l];
   std::printf("input %s: %d x %d x %d voxels, %zu labels besides 0\n", name.c_str(), image.Dimensions[0],
     image.Dimensions[1], image.Dimensions[2], voxelsPerLabel.size() - (voxelsPerLabel.count(0) ? 1 : 0));
-  std::printf("ours: MeshLabelImage h(I,M) = h(M,I) = %g voxels\n", h);
+  if (decimate)
+    std::printf("ours: MeshLabelImage then DecimateMesh, h(I,M) = h(M,I) = %g voxels, %g degrees\n", h, minimumAngle);
+  else
+    std::printf("ours: MeshLabelImage h(I,M) = h(M,I) = %g voxels (not decimated)\n", h);
   std::printf("CGAL: Mesh_3 labelled image, facet_angle %g, facet_size %g, facet_distance %g, "
               "cell_radius_edge_ratio %g, cell_size %g, %s, %s, seed %u\n",
     cgal.FacetAngle, cgal.FacetSize, cgal.FacetDistance, cgal.CellRadiusEdgeRatio, cgal.CellSize,
@@ -225,11 +241,24 @@ int main(int argc, char** argv)
     // MPI and p4est start once per process (about 0.3 s): not part of meshing
     // this image, so started on a tiny image first, as CGAL has no such cost.
     MeshLabelImage(testing::MakeSphere(8, 3.0), parameters);
+    benchmarks::ResetPeakRss();
+    const double before = benchmarks::RssMiB();
     const auto start = std::chrono::steady_clock::now();
-    const MesherResult result = MeshLabelImage(image, parameters);
-    ours.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    MesherResult result = MeshLabelImage(image, parameters);
     for (const auto& t : result.Timings)
       ours.Timings.emplace_back(t.Stage, t.Seconds);
+    if (decimate)
+    {
+      DecimationParameters decimation;
+      decimation.ImageToMeshDistance = decimation.MeshToImageDistance = h;
+      decimation.MinimumAngle = minimumAngle;
+      DecimationResult decimated = DecimateMesh(image, result.Mesh, decimation);
+      for (const auto& t : decimated.Timings)
+        ours.Timings.emplace_back(t.Stage, t.Seconds);
+      result.Mesh = std::move(decimated.Mesh);
+    }
+    ours.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ours.PeakMiB = benchmarks::PeakRssMiB() - before;
     Measure(image, result.Mesh, ours);
   }
   catch (const std::exception& e)
@@ -239,7 +268,10 @@ int main(int argc, char** argv)
   }
   try
   {
+    benchmarks::ResetPeakRss();
+    const double before = benchmarks::RssMiB();
     benchmarks::CGALMeshResult result = benchmarks::MeshWithCGAL(image, cgal);
+    theirs.PeakMiB = benchmarks::PeakRssMiB() - before;
     theirs.Seconds = result.Seconds;
     theirs.Timings = result.Timings;
     Measure(image, result.Mesh, theirs);
@@ -272,6 +304,7 @@ int main(int argc, char** argv)
     Ratio(ours.Distances.Overall.ImageToMesh, theirs.Distances.Overall.ImageToMesh));
   Row("h(M,I) [voxels]", Fixed(ours.Distances.Overall.MeshToImage), Fixed(theirs.Distances.Overall.MeshToImage),
     Ratio(ours.Distances.Overall.MeshToImage, theirs.Distances.Overall.MeshToImage));
+  Row("peak memory [MiB]", Fixed(ours.PeakMiB, 1), Fixed(theirs.PeakMiB, 1), Ratio(ours.PeakMiB, theirs.PeakMiB));
   Row("labels with image topology", std::to_string(ours.TopologyMatches) + "/" + std::to_string(ours.Topology.size()),
     std::to_string(theirs.TopologyMatches) + "/" + std::to_string(theirs.Topology.size()), "");
 
@@ -311,10 +344,10 @@ int main(int argc, char** argv)
       Fixed(a.MeshToImage).c_str(), Fixed(b.MeshToImage).c_str(), topo(ours, l).c_str(), topo(theirs, l).c_str());
   }
 
-  std::printf("\nSUMMARY %s %.6g %.6g %zu %zu %.6g %.6g %.6g %.6g %.6g %.6g %zu/%zu %zu/%zu\n", name.c_str(),
+  std::printf("\nSUMMARY %s %.6g %.6g %zu %zu %.6g %.6g %.6g %.6g %.6g %.6g %zu/%zu %zu/%zu %.1f %.1f\n", name.c_str(),
     ours.Seconds, theirs.Seconds, ours.Cells, theirs.Cells, ours.Quality.MinimumAngle, theirs.Quality.MinimumAngle,
     ours.Distances.Overall.ImageToMesh, theirs.Distances.Overall.ImageToMesh, ours.Distances.Overall.MeshToImage,
     theirs.Distances.Overall.MeshToImage, ours.TopologyMatches, ours.Topology.size(), theirs.TopologyMatches,
-    theirs.Topology.size());
+    theirs.Topology.size(), ours.PeakMiB, theirs.PeakMiB);
   return 0;
 }

@@ -45,8 +45,7 @@ void CurveAndReport(benchmark::State& state, const LabelImage& image, double h)
   curving.HasBorder = true;
   curving.Border = { -0.5, image.Dimensions[0] - 0.5, -0.5, image.Dimensions[1] - 0.5 };
   double meshSeconds = 0.0, curveSeconds = 0.0;
-  std::map<std::string, double> stages;
-  std::vector<std::string> stageOrder;
+  benchmarks::StageTotals stages;
   std::size_t cells = 0, invalidBefore = 0, invalidAfter = 0;
   int steps = 0;
   std::int64_t iterations = 0;
@@ -60,12 +59,7 @@ void CurveAndReport(benchmark::State& state, const LabelImage& image, double h)
       start = Clock::now();
       const CurvingResult result = CurveMesh(linear, curving);
       curveSeconds += SecondsSince(start);
-      for (const auto& [stage, seconds] : result.Timings)
-      {
-        if (!stages.count(stage))
-          stageOrder.push_back(stage);
-        stages[stage] += seconds;
-      }
+      stages.Add(result.Timings);
       cells = result.Mesh.Cells.size();
       invalidBefore = result.InvalidBeforeUntangling;
       invalidAfter = result.InvalidCells.size();
@@ -90,8 +84,8 @@ void CurveAndReport(benchmark::State& state, const LabelImage& image, double h)
   state.counters["invalid_before"] = double(invalidBefore);
   state.counters["invalid_after"] = double(invalidAfter);
   state.counters["steps"] = steps;
-  for (const auto& stage : stageOrder)
-    state.counters[CounterName(stage)] = stages[stage] / iterations;
+  for (const auto& stage : stages.Order)
+    state.counters[CounterName(stage)] = stages.Seconds[stage] / iterations;
 }
 
 void BenchmarkDisc(benchmark::State& state, int n)

@@ -1,20 +1,17 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // LabelMesherBenchmarks: per-stage figures of MeshLabelImage (h(I,M) = h(M,I) = 2
-// voxels) on the Cassini volumes of dissertation section 5.1.1 (100..400 voxels a
-// side), on the shared real label volumes and on a batch of random property-test
-// images. See Benchmarks/README.md for what each counter means.
+// voxels) and of DecimateMesh (the same bounds, 15 degrees) on the Cassini volumes
+// of dissertation section 5.1.1 (100..400 voxels a side), on the shared real label
+// volumes and on a batch of random property-test images. See Benchmarks/README.md
+// for what each counter means.
 #include "BenchmarkSupport.h"
+#include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
 #include "LabelImageFile.h"
 
 #include <benchmark/benchmark.h>
-
-#include <sys/resource.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 #include <chrono>
 #include <cstdlib>
@@ -29,47 +26,15 @@
 using namespace labelmesher;
 using benchmarks::CounterName;
 using benchmarks::DataDirectory;
+using benchmarks::MaxRssMiB;
+using benchmarks::PeakRssMiB;
+using benchmarks::ResetPeakRss;
+using benchmarks::RssMiB;
 
 namespace
 {
 
 using Clock = std::chrono::steady_clock;
-
-/// A field of /proc/self/status in MiB (its values are in kB); -1 if unknown.
-double StatusMiB(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const std::string key = std::string(field) + ":";
-  while (std::getline(status, line))
-    if (line.rfind(key, 0) == 0)
-      return std::atof(line.c_str() + key.size()) / 1024.0;
-  return -1.0;
-}
-/// Peak resident set (VmHWM) since the last ResetPeakRss().
-double PeakRssMiB() { return StatusMiB("VmHWM"); }
-/// Current resident set (VmRSS).
-double RssMiB() { return StatusMiB("VmRSS"); }
-/// Linux >= 4.0: writing 5 to clear_refs resets VmHWM to the current RSS, so
-/// each benchmark case reports its own peak (ru_maxrss cannot be reset).
-void ResetPeakRss()
-{
-#if defined(__GLIBC__)
-  // Hand memory freed by earlier cases back to the system first, so the new
-  // baseline is close to what this case itself holds.
-  malloc_trim(0);
-#endif
-  std::ofstream clear("/proc/self/clear_refs");
-  if (clear)
-    clear << "5";
-}
-/// getrusage's ru_maxrss: the process's lifetime peak, in MiB.
-double MaxRssMiB()
-{
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0; // kB on Linux
-}
 
 MesherParameters H2()
 {
@@ -86,8 +51,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
   ResetPeakRss();
   const double rssBefore = RssMiB();
   double total = 0.0;
-  std::map<std::string, double> stages;
-  std::vector<std::string> stageOrder;
+  benchmarks::StageTotals stages;
   std::size_t cells = 0, foregroundCells = 0, boundaryFaces = 0, leaves = 0;
   std::int64_t iterations = 0;
   try
@@ -97,12 +61,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
       const auto start = Clock::now();
       MesherResult result = MeshLabelImage(image, parameters);
       total += std::chrono::duration<double>(Clock::now() - start).count();
-      for (const auto& timing : result.Timings)
-      {
-        if (!stages.count(timing.Stage))
-          stageOrder.push_back(timing.Stage);
-        stages[timing.Stage] += timing.Seconds;
-      }
+      stages.Add(result.Timings);
       cells = result.Mesh.NumberOfCells();
       foregroundCells = 0;
       for (auto m : result.Mesh.Materials)
@@ -129,8 +88,8 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
   state.counters["leaves"] = double(leaves);
   state.counters["voxels/s"] = voxels / seconds;
   state.counters["cells/s"] = double(cells) / seconds;
-  for (const auto& stage : stageOrder)
-    state.counters[CounterName(stage)] = stages[stage] / iterations;
+  for (const auto& stage : stages.Order)
+    state.counters[CounterName(stage)] = stages.Seconds[stage] / iterations;
   state.counters["rss_before_MiB"] = rssBefore;
   state.counters["peak_rss_MiB"] = PeakRssMiB();
   state.counters["maxrss_MiB"] = MaxRssMiB();
@@ -157,6 +116,70 @@ void BenchmarkFile(benchmark::State& state, const std::string& path)
     return;
   }
   MeshAndReport(state, image);
+}
+
+/// Times DecimateMesh (h = 2, 15 degrees) on the mesh of `image` (meshed
+/// outside the timed loop) and reports the counters.
+void DecimateAndReport(benchmark::State& state, const LabelImage& image)
+{
+  SimplexMesh initial;
+  try
+  {
+    initial = MeshLabelImage(image, H2()).Mesh;
+  }
+  catch (const std::exception& e)
+  {
+    state.SkipWithError(e.what());
+    return;
+  }
+  DecimationParameters parameters;
+  parameters.ImageToMeshDistance = parameters.MeshToImageDistance = 2.0;
+  parameters.MinimumAngle = 15.0;
+  ResetPeakRss();
+  const double rssBefore = RssMiB();
+  double total = 0.0;
+  benchmarks::StageTotals stages;
+  DecimationCounts counts;
+  std::size_t foregroundBefore = 0, foregroundAfter = 0;
+  for (auto m : initial.Materials)
+    foregroundBefore += m != 0;
+  std::int64_t iterations = 0;
+  try
+  {
+    for (auto _ : state)
+    {
+      const auto start = Clock::now();
+      DecimationResult result = DecimateMesh(image, initial, parameters);
+      total += std::chrono::duration<double>(Clock::now() - start).count();
+      stages.Add(result.Timings);
+      counts = result.Counts;
+      foregroundAfter = 0;
+      for (auto m : result.Mesh.Materials)
+        foregroundAfter += m != 0;
+      ++iterations;
+      benchmark::DoNotOptimize(result.Mesh.Points.data());
+    }
+  }
+  catch (const std::exception& e)
+  {
+    state.SkipWithError(e.what());
+    return;
+  }
+  if (iterations == 0)
+    return;
+  const double seconds = total / iterations;
+  state.counters["cells_in"] = double(counts.CellsBefore);
+  state.counters["cells_out"] = double(counts.CellsAfter);
+  state.counters["fg_in"] = double(foregroundBefore);
+  state.counters["fg_out"] = double(foregroundAfter);
+  state.counters["merges"] = double(counts.Merges);
+  state.counters["offers"] = double(counts.Offers);
+  state.counters["cells/s"] = double(counts.CellsBefore) / seconds;
+  state.counters["merges/s"] = double(counts.Merges) / seconds;
+  for (const auto& stage : stages.Order)
+    state.counters[CounterName(stage)] = stages.Seconds[stage] / iterations;
+  state.counters["rss_before_MiB"] = rssBefore;
+  state.counters["peak_rss_MiB"] = PeakRssMiB();
 }
 
 /// Meshes `count` random property-test images per iteration (seeds 0..count-1).
@@ -223,6 +246,31 @@ void RegisterAll()
       ->UseRealTime();
   }
 
+  for (int n : { 100, 200, 300, 400 })
+    benchmark::RegisterBenchmark(("DecimateMesh/Cassini/" + std::to_string(n)).c_str(),
+      [n](benchmark::State& state) { DecimateAndReport(state, testing::MakeCassiniVolume(n)); })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
+  for (const std::string& path : testing::ListNrrdFiles(DataDirectory() + "/3d"))
+  {
+    const std::string name = std::filesystem::path(path).stem().string();
+    benchmark::RegisterBenchmark(("DecimateMesh/File/" + name).c_str(),
+      [path](benchmark::State& state) {
+        try
+        {
+          DecimateAndReport(state, testing::ReadLabelImageFile(path).Image);
+        }
+        catch (const std::exception& e)
+        {
+          state.SkipWithError(e.what());
+        }
+      })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
+  }
+
   for (int dimension : { 2, 3 })
     benchmark::RegisterBenchmark(("MeshLabelImage/RandomImages" + std::to_string(dimension) + "D/100").c_str(),
       [dimension](benchmark::State& state) { BenchmarkRandomImages(state, dimension, 100); })
@@ -246,6 +294,7 @@ int main(int argc, char** argv)
   benchmark::AddCustomContext("process start-up (MPI, p4est), once",
     std::to_string(std::chrono::duration<double>(Clock::now() - startUp).count()) + " s");
   benchmark::AddCustomContext("h(I,M)=h(M,I)", "2 voxels");
+  benchmark::AddCustomContext("decimation angle", "15 degrees");
   benchmark::AddCustomContext("data", DataDirectory());
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

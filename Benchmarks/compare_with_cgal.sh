@@ -1,13 +1,15 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Builds labelmesher_compare_cgal and compares LabelMesher (h = 2) with CGAL 5.5
-# Mesh_3 on a Cassini volume and two shared real label volumes, then prints one
-# table of ratios ours/CGAL. See Benchmarks/README.md.
+# Builds labelmesher_compare_cgal and compares LabelMesher (mesher then
+# decimator, h = 2, 15 degrees) with CGAL 5.5 Mesh_3 on a Cassini volume and the
+# shared real label volumes, then prints one table of ratios ours/CGAL. See
+# Benchmarks/README.md.
 #
 #   Benchmarks/compare_with_cgal.sh [BUILD_DIR] [-- extra options for the tool]
 #
 # Environment: CASSINI_N (default 100), DATA_DIR (default <repo>/../shared/data),
-# JOBS (default 2), SKIP_BUILD=1 to use an existing build.
+# JOBS (default 2), SKIP_BUILD=1 to use an existing build, LARGE=1 for the large
+# volumes too (digimouse, torso, frog, liver).
 set -eu
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -46,14 +48,19 @@ run() { # name, tool arguments...
 run "cassini$n" --cassini "$n" "$@"
 run iso2mesh_rat_head "$data/3d/iso2mesh_rat_head.nrrd" "$@"
 run totalseg_example_seg "$data/3d/totalseg_example_seg.nrrd" "$@"
+if [ "${LARGE:-0}" = 1 ]; then # the large volumes: minutes each
+  for volume in digimouse torso_label frog liver; do
+    run "$volume" "$data/3d/$volume.nrrd" "$@"
+  done
+fi
 
-echo "=== ratios ours/CGAL (time, tetrahedra, min dihedral, h(I,M), h(M,I)); topology = labels matching the image ==="
+echo "=== ratios ours/CGAL (time, tetrahedra, min dihedral, h(I,M), h(M,I), peak memory); topology = labels matching the image ==="
 cat "$logs"/*.log | awk '
   function r(a, b) { return (b == 0) ? ((a == 0) ? "1" : "inf") : sprintf("%.3f", a / b) }
   BEGIN {
-    printf "%-22s %9s %9s %9s %9s %9s   %-11s %-11s\n", "input", "time", "tets", "minDih", "h(I,M)", "h(M,I)", "topo ours", "topo CGAL"
+    printf "%-22s %9s %9s %9s %9s %9s %9s   %-11s %-11s\n", "input", "time", "tets", "minDih", "h(I,M)", "h(M,I)", "memory", "topo ours", "topo CGAL"
   }
   $1 == "SUMMARY" && $3 == "FAILED" { printf "%-22s failed (see log above)\n", $2; next }
   $1 == "SUMMARY" {
-    printf "%-22s %9s %9s %9s %9s %9s   %-11s %-11s\n", $2, r($3, $4), r($5, $6), r($7, $8), r($9, $10), r($11, $12), $13, $14
+    printf "%-22s %9s %9s %9s %9s %9s %9s   %-11s %-11s\n", $2, r($3, $4), r($5, $6), r($7, $8), r($9, $10), r($11, $12), r($15, $16), $13, $14
   }'

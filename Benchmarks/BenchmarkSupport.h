@@ -14,6 +14,9 @@
 #include <malloc.h>
 #endif
 
+#include "Mesh/SimplexMesh.h"
+
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -98,6 +101,12 @@ inline double MaxRssMiB()
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0; // kB on Linux
+}
+
+/// Cells with a non-zero label: what one would simulate on.
+inline std::size_t ForegroundCells(const SimplexMesh& mesh)
+{
+  return std::size_t(std::count_if(mesh.Materials.begin(), mesh.Materials.end(), [](std::int32_t m) { return m != 0; }));
 }
 
 } // namespace benchmarks

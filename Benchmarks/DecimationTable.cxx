@@ -14,6 +14,7 @@
 // made once and decimated at each angle. --distances (repeatable) keeps only
 // those rows, for the full size, where the whole table takes hours.
 
+#include "BenchmarkSupport.h"
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
 #include "SyntheticShapes.h"
@@ -117,9 +118,7 @@ int main(int argc, char** argv)
     mesher.ImageToMeshDistance = h1;
     mesher.MeshToImageDistance = h2;
     const SimplexMesh initial = MeshLabelImage(image, mesher).Mesh;
-    long initialForeground = 0;
-    for (auto m : initial.Materials)
-      initialForeground += m != 0;
+    const long initialForeground = long(benchmarks::ForegroundCells(initial));
     std::printf("| %g | %g | %s |", h1, h2, Thousands(initialForeground).c_str());
     for (int column = 0; column < 4; ++column)
     {
@@ -131,9 +130,7 @@ int main(int argc, char** argv)
       const auto start = std::chrono::steady_clock::now();
       const DecimationResult result = DecimateMesh(image, initial, parameters);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      long foreground = 0;
-      for (auto m : result.Mesh.Materials)
-        foreground += m != 0;
+      const long foreground = long(benchmarks::ForegroundCells(result.Mesh));
       std::printf(" %s / %s (%.1f s) |", Thousands(foreground).c_str(), Thousands(kDissertation[row][column]).c_str(),
         seconds);
       std::fflush(stdout);

@@ -63,9 +63,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
       total += std::chrono::duration<double>(Clock::now() - start).count();
       stages.Add(result.Timings);
       cells = result.Mesh.NumberOfCells();
-      foregroundCells = 0;
-      for (auto m : result.Mesh.Materials)
-        foregroundCells += m != 0;
+      foregroundCells = benchmarks::ForegroundCells(result.Mesh);
       boundaryFaces = result.Boundary.NumberOfCells();
       leaves = result.NumberOfLeaves;
       ++iterations;
@@ -140,9 +138,8 @@ void DecimateAndReport(benchmark::State& state, const LabelImage& image)
   double total = 0.0;
   benchmarks::StageTotals stages;
   DecimationCounts counts;
-  std::size_t foregroundBefore = 0, foregroundAfter = 0;
-  for (auto m : initial.Materials)
-    foregroundBefore += m != 0;
+  const std::size_t foregroundBefore = benchmarks::ForegroundCells(initial);
+  std::size_t foregroundAfter = 0;
   std::int64_t iterations = 0;
   try
   {
@@ -153,9 +150,7 @@ void DecimateAndReport(benchmark::State& state, const LabelImage& image)
       total += std::chrono::duration<double>(Clock::now() - start).count();
       stages.Add(result.Timings);
       counts = result.Counts;
-      foregroundAfter = 0;
-      for (auto m : result.Mesh.Materials)
-        foregroundAfter += m != 0;
+      foregroundAfter = benchmarks::ForegroundCells(result.Mesh);
       ++iterations;
       benchmark::DoNotOptimize(result.Mesh.Points.data());
     }

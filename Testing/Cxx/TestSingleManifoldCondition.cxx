@@ -33,6 +33,7 @@ namespace
 {
 
 using testing::Picture;
+using testing::PlaneWithOneVoxel;
 using testing::Volume;
 
 LeafBox Square(int x, int y, int size) { return LeafBox{ { x, y, 0 }, size, 2 }; }
@@ -163,13 +164,10 @@ TEST(SingleManifoldCondition, ThreeDimensionalIslandOnAnUncrossedFaceFails)
   // corners are all label 0, so the patch does not cross it, yet image
   // boundary touches the face inside (Figure 9b's island): the face stencil
   // would not have it, and the leaf's interface would be two pieces.
-  auto plane = [](int, int, int k) { return k >= 4 ? 1 : 0; };
-  const LabelImage island =
-    Volume(8, [&](int i, int j, int k) { return i == 3 && j == 3 && k == 1 ? 1 : plane(i, j, k); });
+  const LabelImage island = PlaneWithOneVoxel(8, 4, 3, 3, 1, 1);
   EXPECT_FALSE(Manifold(island, Cube(2, 2, 2, 4), 0, 1));
   // Two voxels lower it no longer touches the leaf.
-  const LabelImage away =
-    Volume(8, [&](int i, int j, int k) { return i == 3 && j == 3 && k == 0 ? 1 : plane(i, j, k); });
+  const LabelImage away = PlaneWithOneVoxel(8, 4, 3, 3, 0, 1);
   EXPECT_TRUE(Manifold(away, Cube(2, 2, 2, 4), 0, 1));
 }
 
@@ -181,16 +179,13 @@ TEST(SingleManifoldCondition, ThreeDimensionalSecondBoundarySetOnACrossedFaceFai
   // plane's line at z = 10 and the square (4, 7..8, 6..7) that the third
   // label touches, which no boundary segment joins. The patch has one
   // intersection edge per face; the second set would not be on it.
-  auto plane = [](int, int, int k) { return k >= 10 ? 1 : 0; };
-  const LabelImage apart =
-    Volume(16, [&](int i, int j, int k) { return i == 3 && j == 7 && k == 6 ? 2 : plane(i, j, k); });
+  const LabelImage apart = PlaneWithOneVoxel(16, 10, 3, 7, 6, 2);
   EXPECT_FALSE(Manifold(apart, Cube(4, 4, 4, 8), 0, 1));
   // The same voxel at (3, 7, 9), against the plane's line: its boundary
   // points are joined to the line through the boundary between it and label
   // 0 (one set), and the interface between the leaf's labels is still one
   // plane.
-  const LabelImage touching =
-    Volume(16, [&](int i, int j, int k) { return i == 3 && j == 7 && k == 9 ? 2 : plane(i, j, k); });
+  const LabelImage touching = PlaneWithOneVoxel(16, 10, 3, 7, 9, 2);
   EXPECT_TRUE(Manifold(touching, Cube(4, 4, 4, 8), 0, 1));
 }
 
@@ -479,12 +474,9 @@ TEST(SingleManifoldCondition, ThreeDimensionalPlanePlusSeparateIslandFails)
   // layers higher, (5, 5, 7), the background voxel is enclosed in label 1
   // (and off the leaf's faces), and its closed surface is a second piece of
   // the interface.
-  auto plane = [](int, int, int k) { return k >= 5 ? 1 : 0; };
-  const LabelImage dent =
-    Volume(12, [&](int i, int j, int k) { return i == 5 && j == 5 && k == 5 ? 0 : plane(i, j, k); });
+  const LabelImage dent = PlaneWithOneVoxel(12, 5, 5, 5, 5, 0);
   EXPECT_TRUE(Manifold(dent, Cube(2, 2, 2, 8), 0, 1));
-  const LabelImage bubble =
-    Volume(12, [&](int i, int j, int k) { return i == 5 && j == 5 && k == 7 ? 0 : plane(i, j, k); });
+  const LabelImage bubble = PlaneWithOneVoxel(12, 5, 5, 5, 7, 0);
   EXPECT_FALSE(Manifold(bubble, Cube(2, 2, 2, 8), 0, 1));
 }
 

@@ -46,6 +46,13 @@ inline LabelImage Volume(int n, const std::function<std::int32_t(int, int, int)>
   return image;
 }
 
+/// An n^3 image of label 1 at k >= planeK and 0 below, except the one voxel
+/// (i, j, k), which has `label`: a plane with a dent, a bump or a lone voxel.
+inline LabelImage PlaneWithOneVoxel(int n, int planeK, int vi, int vj, int vk, std::int32_t label)
+{
+  return Volume(n, [=](int i, int j, int k) { return i == vi && j == vj && k == vk ? label : (k >= planeK ? 1 : 0); });
+}
+
 /// An nx x ny 2D image with label(i, j) at pixel (i, j).
 inline LabelImage Plane(int nx, int ny, const std::function<std::int32_t(int, int)>& label)
 {

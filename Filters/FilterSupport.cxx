@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Plumbing the LabelMesher filters share: progress, requests, cell arrays, field data.
 #include "FilterSupport.h"
 
 #include "Checks/MeshChecks.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Converts vtkImageData label images to the core's validated LabelImage, with the map back to physical space.
 #include "LabelImageConversion.h"
 
 #include "vtkArrayDispatch.h"

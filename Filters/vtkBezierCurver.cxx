@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// vtkBezierCurver's passes: flatten the triangles, run the core curver, pack Bézier cells and field
+// data.
 #include "vtkBezierCurver.h"
 
 #include "Curving/BezierCurver.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// vtkLabelOctreeMesher's passes: read the image, run the core mesher, pack the mesh, interfaces and
+// field data.
 #include "vtkLabelOctreeMesher.h"
 
 #include "FilterSupport.h"

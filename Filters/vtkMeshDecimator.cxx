@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// vtkMeshDecimator's passes: check the inputs, gather the mesh, run the core decimator, pack and
+// measure.
 #include "vtkMeshDecimator.h"
 
 #include "Decimation/MeshDecimator.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Parses and validates the labelmesher command line; every mistake becomes one UsageError line.
 #include "Arguments.h"
 
 #include "StringUtilities.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Gathers what `labelmesher curve` produced from vtkBezierCurver's output and prints it or writes it
+// as JSON.
 #include "CurveReport.h"
 
 #include "Arguments.h"

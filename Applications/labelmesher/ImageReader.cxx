@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Reads label images (ITK formats, .vti, .png) into vtkImageData, checking every rule of the CLI's
+// input.
 #include "ImageReader.h"
 
 #include "StringUtilities.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// A minimal streaming JSON writer for the CLI's reports.
 #include "JsonWriter.h"
 
 #include <cmath>

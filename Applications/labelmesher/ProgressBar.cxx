@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Draws the CLI's one-line progress bar on stderr when it is a terminal.
 #include "ProgressBar.h"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Gathers what `labelmesher mesh` produced from the filters' field data and prints it or writes it as
+// JSON.
 #include "Report.h"
 
 #include "Arguments.h"

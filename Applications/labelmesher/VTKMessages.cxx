@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Turns a VTK object's error and warning events into one plain line instead of VTK's log records.
 #include "VTKMessages.h"
 
 #include "vtkObject.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The vertex-to-cell incidence and the distinct facets and edges of a simplex mesh, for the checks only.
 #include "Checks/MeshIncidence.h"
 
 #include <stdexcept>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The mesher's exact branch-and-bound test of one side of a Hausdorff bound (no code shared with
+// Checks/).
 #include "Criteria/DistanceBound.h"
 
 #include "Support/Geometry.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The two-sided Hausdorff test of a proper boundary leaf's patch (section 3.1.1).
 #include "Criteria/LeafFidelity.h"
 
 #include "Fill/LeafSurfacePatch.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// What an octree leaf must satisfy to be kept, in the order Algorithm 2 checks it (section 3.1.1).
 #include "Criteria/RefinementCriteria.h"
 
 #include "Criteria/LeafFidelity.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The single manifold condition of a two-label leaf (section 2.4), strong enough for the cone patch.
 #include "Criteria/SingleManifoldCondition.h"
 
 #include "Octree/LatticeLabels.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The 2D curvilinear mesher of chapter 4: smooth the interfaces, prove validity, untangle.
 #include "Curving/BezierCurver.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Splits the triangles with two edges on one smooth chain before curving (they would have det J = 0).
 #include "Curving/BoundaryEars.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Point location in a curved mesh and the misclassified-pixel measure of section 5.2.3.
 #include "Curving/CurvedMeshLocator.h"
 
 #include <algorithm>

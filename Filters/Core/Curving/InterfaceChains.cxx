@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The chains of edges a 2D mesh's material interfaces are made of (section 4.1).
 #include "Curving/InterfaceChains.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// C1 and C2 cubic Bézier paths through a chain's vertices (section 4.1, Figure 17).
 #include "Curving/SmoothBoundary.h"
 
 #include <Eigen/SparseCholesky>

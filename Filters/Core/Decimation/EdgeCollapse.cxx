@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Plans and applies one vertex merge of section 3.1.3: the cells that change, vanish and stay.
 #include "Decimation/EdgeCollapse.h"
 
 #include <algorithm>

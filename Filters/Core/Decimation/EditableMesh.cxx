@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The decimator's mesh: doubled-lattice integer points, cell incidence, strata of the box.
 #include "Decimation/EditableMesh.h"
 
 #include "Support/ParallelChunks.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Requirement 2 of section 3.1.3: both one-sided distances of a merge, decided exactly.
 #include "Decimation/FidelityCheck.h"
 
 #include <algorithm>

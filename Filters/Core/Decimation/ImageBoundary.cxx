@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The image boundary as voxel faces with their two labels, and a grid to find those near a box.
 #include "Decimation/ImageBoundary.h"
 
 #include <algorithm>

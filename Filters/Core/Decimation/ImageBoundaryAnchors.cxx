@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Keeps a certificate of h(I,M) for every image boundary face side, re-made locally after each merge.
 #include "Decimation/ImageBoundaryAnchors.h"
 
 #include "Support/Geometry.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The order of Algorithm 4's merges: shortest incident edge first, or a plain queue.
 #include "Decimation/MergeQueue.h"
 
 namespace labelmesher

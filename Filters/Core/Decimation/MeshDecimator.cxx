@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The decimation of section 3.1.3 (Algorithm 4): regions in parallel with frozen borders, then the
+// borders.
 #include "Decimation/MeshDecimator.h"
 
 #include "Decimation/EdgeCollapse.h"

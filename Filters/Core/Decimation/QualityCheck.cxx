@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Requirement 1 of section 3.1.3: exact orientation and the angle bound of the cells a merge moves.
 #include "Decimation/QualityCheck.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Requirement 3 of section 3.1.3: the link condition on every stratum a merge touches.
 #include "Decimation/TopologyCheck.h"
 
 #include <algorithm>

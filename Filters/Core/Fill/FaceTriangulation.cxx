@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Triangulates one square face of a leaf from its corner labels and split points (section 3.1.2).
 #include "Fill/FaceTriangulation.h"
 
 #include "Support/Geometry.h"

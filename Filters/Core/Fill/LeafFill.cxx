@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Fills one octree leaf with tetrahedra (triangles in 2D) from its face stencils (Algorithm 3).
 #include "Fill/LeafFill.h"
 
 #include "Fill/FaceTriangulation.h"

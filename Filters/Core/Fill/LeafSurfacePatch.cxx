@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// The cone surface patch of a proper boundary leaf (section 3.1.1, "Waterproof surface mesh").
 #include "Fill/LeafSurfacePatch.h"
 
 #include "Support/UnionFind.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Merges the cells that leaves emit into one SimplexMesh, keying vertices on the lattice.
 #include "Fill/MeshAssembler.h"
 
 #include <stdexcept>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Extracts the mesh boundary: the faces whose two sides carry different materials.
 #include "Mesh/MeshBoundary.h"
 
 #include "Support/ParallelChunks.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Sub-meshes of chosen materials, with the unused points dropped.
 #include "Mesh/MeshSelection.h"
 
 namespace labelmesher

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Builds the pyramid that tells in O(1) which labels an octree leaf holds.
 #include "Octree/LabelPyramid.h"
 
 #include <algorithm>

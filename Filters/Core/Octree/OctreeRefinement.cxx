@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Refines and balances the p4est forest until every leaf passes the refinement criteria (Algorithm 2).
 #include "Octree/OctreeRefinement.h"
 
 #include <mpi.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Independent checks of a curved mesh for the curver's tests (sampled det J, continuity).
 #include "CurvingChecks.h"
 
 #include "Mesh/MeshSelection.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Runs mesher and decimator on one image and checks every guarantee of the decimated mesh.
 #include "DecimatorGuarantees.h"
 
 #include "MeshGuarantees.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Measures the guarantees of one mesh with the independent checks and lists what fails.
 #include "MeshGuarantees.h"
 
 #include "Checks/MeshChecks.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Runs the mesher on one image and checks every guarantee of the initial mesh.
 #include "MesherGuarantees.h"
 
 #include "MeshGuarantees.h"

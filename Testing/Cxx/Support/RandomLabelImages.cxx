@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Seeded, reproducible random multi-label images for the property tests.
 #include "RandomLabelImages.h"
 
 #include <algorithm>

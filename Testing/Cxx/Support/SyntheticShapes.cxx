@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Analytic label images (discs, ellipses, spheres, tori, the Cassini volume) for tests and benchmarks.
 #include "SyntheticShapes.h"
 
 #include <algorithm>

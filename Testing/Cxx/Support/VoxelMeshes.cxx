@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Voxel-by-voxel reference meshes for testing the checks.
 #include "VoxelMeshes.h"
 
 #include <utility>

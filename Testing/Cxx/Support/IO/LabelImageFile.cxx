@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
+// Reads 3D label images with ITK for tests and benchmarks.
 #include "LabelImageFile.h"
 
 #include "itkImage.h"

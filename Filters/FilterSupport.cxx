@@ -211,10 +211,25 @@ void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vt
 void PackInterfaces(const SimplexMesh& faces, const std::vector<std::pair<std::int32_t, std::int32_t>>& sides,
   const ImagePlacement& placement, vtkPolyData* output)
 {
-  output->SetPoints(PhysicalPoints(faces.Points, placement));
+  // The faces share the volume mesh's points; keep only those they use, so
+  // that the polydata has no stray points (numbered in first-use order).
+  std::vector<std::int64_t> renumber(faces.Points.size(), -1);
+  std::vector<Point3> used;
+  std::vector<std::int64_t> connectivity(faces.Connectivity.size());
+  for (std::size_t i = 0; i < faces.Connectivity.size(); ++i)
+  {
+    std::int64_t& id = renumber[static_cast<std::size_t>(faces.Connectivity[i])];
+    if (id < 0)
+    {
+      id = static_cast<std::int64_t>(used.size());
+      used.push_back(faces.Points[static_cast<std::size_t>(faces.Connectivity[i])]);
+    }
+    connectivity[i] = id;
+  }
+  output->SetPoints(PhysicalPoints(used, placement));
   // A facet of a d-simplex has d vertices; the faces' mesh has Dimension d - 1.
   const int facetVertices = faces.Dimension + 1;
-  auto cells = MakeCellArray(faces.Connectivity, facetVertices);
+  auto cells = MakeCellArray(connectivity, facetVertices);
   if (facetVertices == 3)
   {
     output->SetPolys(cells);

@@ -94,7 +94,7 @@ void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMes
 void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output);
 
 /// Port 1: interface faces (triangles, or segments in 2D) in physical space,
-/// cell data Materials (the labels on either side).
+/// only the points they use, cell data Materials (the labels on either side).
 void PackInterfaces(const SimplexMesh& faces, const std::vector<std::pair<std::int32_t, std::int32_t>>& sides,
   const ImagePlacement& placement, vtkPolyData* output);
 

@@ -58,6 +58,8 @@ TEST(vtkLabelOctreeMesher, PortsTakeImageDataAndGiveAGridAndItsInterfaces)
   ASSERT_NE(interfaces, nullptr);
   ASSERT_GT(grid->GetNumberOfCells(), 0);
   EXPECT_EQ(vtkPolyData::SafeDownCast(mesher->GetOutputDataObject(1)), interfaces);
+  EXPECT_EQ(CountUnusedPoints(grid), 0);
+  EXPECT_EQ(CountUnusedPoints(interfaces), 0) << "the interfaces keep only their own points";
 
   // Port 0: tetrahedra only, Material (int) as the active cell scalars, no background.
   vtkNew<vtkCellTypes> types;
@@ -182,6 +184,7 @@ TEST(vtkLabelOctreeMesher, SingleSliceImageGivesTrianglesInItsPlane)
   EXPECT_EQ(bounds[3], 3.0);
   EXPECT_GE(Field(grid, arrays::MinimumAngle)->GetComponent(0, 0), 45.0 - 1e-9);
   EXPECT_GT(mesher->GetBoundaryOutput()->GetNumberOfLines(), 0);
+  EXPECT_EQ(CountUnusedPoints(mesher->GetBoundaryOutput()), 0);
 }
 
 TEST(vtkLabelOctreeMesher, BadInputIsOneErrorAndAnEmptyOutput)

@@ -83,6 +83,8 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   EXPECT_EQ(range[0], 1.0) << "background dropped by default";
   EXPECT_EQ(range[1], 1.0);
   EXPECT_EQ(CountNonPositiveTetrahedra(out), 0);
+  EXPECT_EQ(CountUnusedPoints(out), 0) << "the background's points go with its cells";
+  EXPECT_EQ(CountUnusedPoints(decimator->GetBoundaryOutput()), 0);
   // Same physical place as the initial mesh: the bounds of the material.
   double before[6], after[6];
   pipeline.Mesher->SetIncludeBackground(false);
@@ -134,6 +136,8 @@ TEST(vtkMeshDecimator, TwoDimensionalImageGivesTrianglesInItsPlane)
   EXPECT_EQ(bounds[2], 3.0);
   EXPECT_EQ(bounds[3], 3.0);
   EXPECT_GE(Field(out, arrays::MinimumAngle), 30.0 - 1e-9);
+  EXPECT_EQ(CountUnusedPoints(out), 0);
+  EXPECT_EQ(CountUnusedPoints(pipeline.Decimator->GetBoundaryOutput()), 0);
 }
 
 TEST(vtkMeshDecimator, BadInputIsOneErrorAndAnEmptyOutput)

@@ -15,14 +15,17 @@
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkIdList.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -169,6 +172,20 @@ inline int CountNonPositiveTetrahedra(vtkUnstructuredGrid* grid)
     count += det <= 0.0;
   }
   return count;
+}
+
+/// Points of `data` that no cell uses (an output should have none).
+inline vtkIdType CountUnusedPoints(vtkDataSet* data)
+{
+  std::vector<char> used(static_cast<std::size_t>(data->GetNumberOfPoints()), 0);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    data->GetCellPoints(c, ids);
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+      used[static_cast<std::size_t>(ids->GetId(i))] = 1;
+  }
+  return static_cast<vtkIdType>(std::count(used.begin(), used.end(), 0));
 }
 
 } // namespace testing

@@ -61,6 +61,7 @@ inline constexpr char MergeOffers[] = "MergeOffers";
 inline constexpr char MergesRejectedByQuality[] = "MergesRejectedByQuality";
 inline constexpr char MergesRejectedByTopology[] = "MergesRejectedByTopology";
 inline constexpr char MergesRejectedByFidelity[] = "MergesRejectedByFidelity";
+inline constexpr char VerticesRelocated[] = "VerticesRelocated";
 inline constexpr char FrozenVertices[] = "FrozenVertices";
 
 // ---- field data: vtkBezierCurver ----

@@ -228,6 +228,7 @@ int vtkMeshDecimator::RequestData(
   labelmesher::SimplexMesh mesh;
   labelmesher::DecimationParameters parameters;
   parameters.MinimumAngle = this->MinimumAngle;
+  parameters.RelocateInteriorVertices = this->RelocateInteriorVertices;
   if (!GatherMesh(input, placement, image.Dimension(), mesh, error) ||
     !ResolveDistance(this->ImageToMeshDistance, input, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance, error) ||
     !ResolveDistance(this->MeshToImageDistance, input, arrays::MeshToImageDistance, parameters.MeshToImageDistance, error))
@@ -276,6 +277,7 @@ int vtkMeshDecimator::RequestData(
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByQuality, static_cast<double>(counts.RejectedByQuality));
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByTopology, static_cast<double>(counts.RejectedByTopology));
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByFidelity, static_cast<double>(counts.RejectedByFidelity));
+  labelmesher::AddScalarField(fd, arrays::VerticesRelocated, static_cast<double>(counts.Relocations));
   labelmesher::AddScalarField(fd, arrays::FrozenVertices, static_cast<double>(counts.FrozenVertices));
   if (this->MeasureOutput)
   {
@@ -305,6 +307,7 @@ void vtkMeshDecimator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumAngle: " << this->MinimumAngle << " degrees\n";
   os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
   os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";
+  os << indent << "RelocateInteriorVertices: " << (this->RelocateInteriorVertices ? "On" : "Off") << "\n";
   os << indent << "IncludeBackground: " << (this->IncludeBackground ? "On" : "Off") << "\n";
   os << indent << "MeasureOutput: " << (this->MeasureOutput ? "On" : "Off") << "\n";
 }

@@ -106,6 +106,8 @@ std::string Usage()
          "  --no-decimate              keep the initial mesh (angles >= 30 3D, 45 2D);\n"
          "                             the default of 'curve'\n"
          "  --decimate                 decimate (the default of 'mesh')\n"
+         "  --no-relocate              merges only: do not move interior vertices between\n"
+         "                             rounds of merges (more cells; the dissertation's way)\n"
          "  --include-background       keep the cells of label 0\n"
          "  --no-measure               do not measure the output (angles, distances,\n"
          "                             conformity, topology); saves 1-2x the meshing time\n"
@@ -128,6 +130,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
   std::vector<std::string> positional;
   std::string curveOption; // first curve-only option seen
   bool minAngleGiven = false;
+  bool noRelocateGiven = false;
   std::string decimateOption; // --decimate or --no-decimate, if given
   for (std::size_t w = 0; w < words.size(); ++w)
   {
@@ -226,6 +229,12 @@ Arguments ParseArguments(int argc, const char* const* argv)
       args.MinimumAngle = ParseAngle(takeValue());
       minAngleGiven = true;
     }
+    else if (word == "--no-relocate")
+    {
+      noValue();
+      args.Relocate = false;
+      noRelocateGiven = true;
+    }
     else if (word == "--no-decimate" || word == "--decimate")
     {
       noValue();
@@ -270,6 +279,10 @@ Arguments ParseArguments(int argc, const char* const* argv)
   // 'curve' keeps the initial mesh unless asked: the curver cannot yet prove
   // every cell of a decimated mesh valid (issue 13).
   args.Decimate = decimateOption.empty() ? args.Command == "mesh" : decimateOption == "--decimate";
+  if (noRelocateGiven && !args.Decimate)
+  {
+    throw UsageError("--no-relocate is a decimator option: it needs decimation ('curve' decimates only with --decimate)");
+  }
   if (minAngleGiven && !args.Decimate)
   {
     throw UsageError(decimateOption.empty()

@@ -30,6 +30,7 @@ struct Arguments
   bool IncludeBackground = false;
   bool Measure = true;              ///< measure the output (angles, distances, topology)
   bool Decimate = true;             ///< run vtkMeshDecimator after the mesher (default: mesh yes, curve no)
+  bool Relocate = true;             ///< the decimator moves interior vertices between rounds of merges
   double MinimumAngle = 15.0;       ///< degrees, the decimator's angle bound; (0, 30] in 3D, (0, 45] in 2D
   // curve only
   int Smoothness = 2;               ///< 1 (C1) or 2 (C2)

@@ -140,6 +140,7 @@ RunReport MakeReport(
     d.RejectedByTopology = FieldCount(fd, arrays::MergesRejectedByTopology);
     d.RejectedByFidelity = FieldCount(fd, arrays::MergesRejectedByFidelity);
     d.FrozenVertices = FieldCount(fd, arrays::FrozenVertices);
+    d.Relocations = FieldCount(fd, arrays::VerticesRelocated);
     r.Decimation = d;
   }
   return r;
@@ -164,7 +165,7 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     out << "Decimated: " << d.CellsBefore << " -> " << d.CellsAfter << " " << cellName << " (angle bound "
         << FormatFixed(d.AngleBound, 2) << " deg; " << d.Merges << " merges, refused by quality "
         << d.RejectedByQuality << ", topology " << d.RejectedByTopology << ", fidelity " << d.RejectedByFidelity
-        << ")\n";
+        << "; " << d.Relocations << " interior vertices relocated)\n";
   }
   else
   {
@@ -228,6 +229,7 @@ void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonW
   j.Key("rejected_by_topology").Integer(d.RejectedByTopology);
   j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
   j.Key("frozen_vertices").Integer(d.FrozenVertices);
+  j.Key("vertices_relocated").Integer(d.Relocations);
   j.EndObject();
 }
 

@@ -157,6 +157,7 @@ int Run(const Arguments& args)
   if (args.Decimate)
   {
     decimator->SetMinimumAngle(args.MinimumAngle);
+    decimator->SetRelocateInteriorVertices(args.Relocate);
     decimator->SetIncludeBackground(args.IncludeBackground);
     decimator->SetMeasureOutput(args.Measure);
     decimator->SetInputConnection(0, mesher->GetOutputPort(0));

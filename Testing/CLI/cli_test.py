@@ -341,6 +341,25 @@ def case_min_angle():
     print("OK: min angle", cells)
 
 
+def case_no_relocate():
+    """--no-relocate keeps the merges alone: no vertex relocated, at least as
+    many cells, the same bounds; it needs decimation."""
+    image = write_nrrd("ball.nrrd", ball(20, 8.5).astype(np.uint8), "uchar")
+    cells, reports = {}, {}
+    for name, extra in (("relocated", []), ("merges", ["--no-relocate"])):
+        result = run("mesh", image, "-o", path(name + ".vtu"), "--report", path(name + ".json"), *extra)
+        assert result.returncode == 0, result.stderr
+        assert "interior vertices relocated" in result.stdout, result.stdout
+        grid, reports[name] = check_mesh_and_report(path(name + ".vtu"), path(name + ".json"), VTK_TETRA, {1})
+        cells[name] = grid.GetNumberOfCells()
+        assert reports[name]["quality"]["minimum_angle_degrees"] >= 15.0 - 1e-9
+    assert reports["merges"]["decimation"]["vertices_relocated"] == 0, reports["merges"]["decimation"]
+    assert reports["relocated"]["decimation"]["vertices_relocated"] > 0, reports["relocated"]["decimation"]
+    assert cells["relocated"] < cells["merges"], cells
+    expect_failure(run("mesh", image, "-o", path("x.vtu"), "--no-relocate", "--no-decimate"), "needs decimation", 2)
+    print("OK: no relocate", cells)
+
+
 def two_blobs_png(name):
     """A disc of label 2 touching a disc of label 5 (an interface between two
     materials and with the background) on a 48 x 40 image."""

@@ -120,6 +120,19 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   ASSERT_GT(interfaces->GetNumberOfPolys(), 0);
   EXPECT_NE(interfaces->GetCellData()->GetArray(arrays::Materials), nullptr);
   EXPECT_LT(interfaces->GetNumberOfPolys(), pipeline.Mesher->GetBoundaryOutput()->GetNumberOfPolys());
+
+  // Relocation is on by default and is counted; off, no vertex moves and no
+  // fewer cells stay (here its moves are all in the background; the core's
+  // and the CLI's tests show the cells it saves).
+  EXPECT_TRUE(decimator->GetRelocateInteriorVertices());
+  EXPECT_GT(Field(out, arrays::VerticesRelocated), 0.0);
+  const double relocated = Field(out, arrays::CellsAfter);
+  decimator->RelocateInteriorVerticesOff();
+  decimator->Update();
+  out = decimator->GetOutput();
+  EXPECT_EQ(Field(out, arrays::VerticesRelocated), 0.0);
+  EXPECT_GE(Field(out, arrays::CellsAfter), relocated);
+  EXPECT_GE(Field(out, arrays::MinimumAngle), 12.0 - 1e-9);
 }
 
 TEST(vtkMeshDecimator, TwoDimensionalImageGivesTrianglesInItsPlane)

@@ -8,6 +8,7 @@
 #include "Decimation/FidelityCheck.h"
 #include "Decimation/ImageBoundary.h"
 #include "Decimation/ImageBoundaryAnchors.h"
+#include "Decimation/InteriorRelocation.h"
 #include "Decimation/MergeQueue.h"
 #include "Decimation/QualityCheck.h"
 #include "Decimation/TopologyCheck.h"
@@ -419,17 +420,58 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
     return std::make_pair(next, regions);
   };
 
-  // Pass 1 offers every vertex; passes 2 and 3 what the borders held back,
-  // cut afresh from the vertices left (the mesh is coarser: as many vertices
-  // per run cover more of it) with the cuts moved by half and a quarter run,
-  // so that old borders lie inside the new runs; the last pass, on one
-  // thread, whatever is still held.
-  auto [held, regions] = pass(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.0, false, 0.1, 0.7);
-  const double shifts[] = { 0.5, 0.25 };
-  for (int k = 0; k < 2 && regions > 1; ++k)
-    std::tie(held, regions) = pass(held, shifts[k], false, 0.8 + 0.05 * k, 0.05);
-  if (regions > 1)
-    pass(held, 0.0, true, 0.9, 0.05);
+  // The pass sequence over the vertices flagged in `offered`. Pass 1 offers
+  // them all; passes 2 and 3 what the borders held back, cut afresh from the
+  // vertices left (the mesh is coarser: as many vertices per run cover more
+  // of it) with the cuts moved by half and a quarter run, so that old borders
+  // lie inside the new runs; the last pass, on one thread, whatever is still
+  // held.
+  auto decimate = [&](const std::vector<std::uint8_t>& offered, double start, double share) {
+    auto [held, regions] = pass(offered, 0.0, false, start, 0.85 * share);
+    const double shifts[] = { 0.5, 0.25 };
+    for (int k = 0; k < 2 && regions > 1; ++k)
+      std::tie(held, regions) = pass(held, shifts[k], false, start + (0.85 + 0.05 * k) * share, 0.05 * share);
+    if (regions > 1)
+      pass(held, 0.0, true, start + 0.95 * share, 0.05 * share);
+  };
+  decimate(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.1, 0.7);
+
+  // Rounds of relocation (InteriorRelocation.h): interior vertices move to
+  // where their cells' smallest angle is larger, and they and their
+  // neighbours are offered for merging again, until no vertex moves. One
+  // thread, in Morton order: the decimated mesh is small by now, and the
+  // order is the same for every thread count.
+  if (parameters.RelocateInteriorVertices)
+  {
+    InteriorRelocation relocation;
+    Worker scratch(shared, boundary);
+    for (int round = 0; round < kRelocationRounds; ++round)
+    {
+      const double start = 0.8 + 0.15 * round / kRelocationRounds;
+      if (!observer.Report("decimation: relocation", start))
+        throw AbortRequested{};
+      std::vector<std::uint8_t> touched(mesh.Position.size(), 0);
+      std::size_t moved = 0;
+      for (VertexId v : aliveInMortonOrder())
+      {
+        if (frozen[v] || !relocation.TryMove(mesh, v, parameters.Checks.Quality))
+          continue;
+        ++moved;
+        touched[v] = 1;
+        shared.Key[v] = ShortestEdge(mesh, v);
+        NeighboursOf(mesh, v, scratch, scratch.Neighbours);
+        for (VertexId x : scratch.Neighbours)
+        {
+          touched[x] = 1;
+          shared.Key[x] = ShortestEdge(mesh, x);
+        }
+      }
+      result.Counts.Relocations += moved;
+      if (moved == 0)
+        break;
+      decimate(touched, start, 0.15 / kRelocationRounds);
+    }
+  }
   clock.Finish("decimation");
 
   if (!observer.Report("decimation output", 0.95))

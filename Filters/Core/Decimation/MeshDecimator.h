@@ -54,6 +54,9 @@ struct DecimationResult
 /// Vertices per region of the parallel passes (the regions depend on the mesh
 /// only, never on the number of threads).
 constexpr std::size_t kDecimationRegionVertices = 16384;
+/// At most this many rounds of relocation and merges: they stop earlier, when
+/// no vertex moves (Cassini 100 at 15 degrees: after 12 rounds).
+constexpr int kRelocationRounds = 32;
 
 /// The smallest angle (degrees) a decimation may ask for: the initial mesh's
 /// proven bound (Testing/Cxx/TestAngleBoundEnumeration.cxx).

@@ -8,11 +8,12 @@
 // (Testing/Cxx/Support/SyntheticShapes.h): the text gives no formula, so the
 // comparison is of orders of magnitude, not of exact counts.
 //
-//   labelmesher_decimation_table [--cassini N] [--order shortest|queue] [--distances H1,H2]...
+//   labelmesher_decimation_table [--cassini N] [--order shortest|queue] [--no-relocate] [--distances H1,H2]...
 //
 // N defaults to 400 (the table's size). The mesh of each pair of distances is
 // made once and decimated at each angle. --distances (repeatable) keeps only
-// those rows, for the full size, where the whole table takes hours.
+// those rows, in the order given, for the full size, where the whole table
+// takes hours.
 
 #include "BenchmarkSupport.h"
 #include "Decimation/MeshDecimator.h"
@@ -24,6 +25,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace labelmesher;
 
@@ -63,9 +65,9 @@ int main(int argc, char** argv)
 {
   int n = 400;
   MergeOrder order = MergeOrder::ShortestEdgeFirst;
-  bool rows[9] = {};
-  bool rowsChosen = false;
-  const char* usage = "usage: %s [--cassini N] [--order shortest|queue] [--distances H1,H2]...\n";
+  bool relocate = true;
+  std::vector<int> rows; // in the order asked for; all nine by default
+  const char* usage = "usage: %s [--cassini N] [--order shortest|queue] [--no-relocate] [--distances H1,H2]...\n";
   for (int a = 1; a < argc; ++a)
   {
     if (!std::strcmp(argv[a], "--cassini") && a + 1 < argc)
@@ -80,6 +82,8 @@ int main(int argc, char** argv)
       }
       order = value == "queue" ? MergeOrder::Queue : MergeOrder::ShortestEdgeFirst;
     }
+    else if (!std::strcmp(argv[a], "--no-relocate"))
+      relocate = false;
     else if (!std::strcmp(argv[a], "--distances") && a + 1 < argc)
     {
       int h1 = -1, h2 = -1;
@@ -88,7 +92,7 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "--distances expects H1,H2 with each in {0, 1, 2}\n");
         return 2;
       }
-      rows[3 * h1 + h2] = rowsChosen = true;
+      rows.push_back(3 * h1 + h2);
     }
     else
     {
@@ -102,17 +106,19 @@ int main(int argc, char** argv)
     return 2;
   }
   const LabelImage image = testing::MakeCassiniVolume(n);
-  std::printf("Cassini %d^3, %s first; cells: foreground tetrahedra, ours / dissertation's ORD "
+  std::printf("Cassini %d^3, %s first, %s; cells: foreground tetrahedra, ours / dissertation's ORD "
               "(decimation seconds)\n\n",
-    n, order == MergeOrder::Queue ? "queue order" : "shortest edge");
+    n, order == MergeOrder::Queue ? "queue order" : "shortest edge",
+    relocate ? "interior vertices relocated" : "merges only");
   std::printf("| h(I,M) | h(M,I) | initial |");
   for (double angle : kAngles)
     std::printf(" %g deg |", angle);
   std::printf("\n|---|---|---|---|---|---|---|\n");
-  for (int row = 0; row < 9; ++row)
+  if (rows.empty())
+    for (int row = 0; row < 9; ++row)
+      rows.push_back(row);
+  for (const int row : rows)
   {
-    if (rowsChosen && !rows[row])
-      continue;
     const double h1 = row / 3, h2 = row % 3;
     MesherParameters mesher;
     mesher.ImageToMeshDistance = h1;
@@ -127,6 +133,7 @@ int main(int argc, char** argv)
       parameters.MeshToImageDistance = h2;
       parameters.MinimumAngle = kAngles[column];
       parameters.Order = order;
+      parameters.RelocateInteriorVertices = relocate;
       const auto start = std::chrono::steady_clock::now();
       const DecimationResult result = DecimateMesh(image, initial, parameters);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

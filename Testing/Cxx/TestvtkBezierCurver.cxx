@@ -28,12 +28,6 @@ using namespace labelmesher::testing;
 namespace
 {
 
-double FieldValue(vtkDataObject* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(0, 0) : -1.0;
-}
-
 } // namespace
 
 TEST(vtkBezierCurver, CurvesTheMesherOutputIntoValidCubicTrianglesWithItsArrays)
@@ -83,15 +77,15 @@ TEST(vtkBezierCurver, CurvesTheMesherOutputIntoValidCubicTrianglesWithItsArrays)
     EXPECT_EQ(valid->GetComponent(c, 0), 1.0);
   }
 
-  EXPECT_EQ(FieldValue(curved, arrays::Smoothness), 1.0);
-  EXPECT_EQ(FieldValue(curved, arrays::Tension), 0.25);
-  EXPECT_EQ(FieldValue(curved, arrays::InvalidCells), 0.0);
-  EXPECT_EQ(FieldValue(curved, arrays::InterfaceChains), 1.0); // one closed circle
-  EXPECT_EQ(FieldValue(curved, arrays::ClosedInterfaceChains), 1.0);
-  EXPECT_GT(FieldValue(curved, arrays::CurvedEdges), 0.0);
-  EXPECT_EQ(FieldValue(curved, arrays::Pixels), 32.0 * 32.0);
-  EXPECT_GE(FieldValue(curved, arrays::MisclassifiedPixelsLinear), 0.0);
-  EXPECT_GE(FieldValue(curved, arrays::MisclassifiedPixelsCurved), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::Smoothness), 1.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::Tension), 0.25);
+  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::InterfaceChains), 1.0); // one closed circle
+  EXPECT_EQ(FieldScalar(curved, arrays::ClosedInterfaceChains), 1.0);
+  EXPECT_GT(FieldScalar(curved, arrays::CurvedEdges), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::Pixels), 32.0 * 32.0);
+  EXPECT_GE(FieldScalar(curved, arrays::MisclassifiedPixelsLinear), 0.0);
+  EXPECT_GE(FieldScalar(curved, arrays::MisclassifiedPixelsCurved), 0.0);
   auto* names = vtkStringArray::SafeDownCast(curved->GetFieldData()->GetAbstractArray(arrays::StageName));
   ASSERT_NE(names, nullptr);
   EXPECT_EQ(names->GetValue(names->GetNumberOfValues() - 1), "pixel accuracy");

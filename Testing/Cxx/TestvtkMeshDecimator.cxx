@@ -32,12 +32,6 @@ using namespace labelmesher::testing;
 namespace
 {
 
-double Field(vtkDataObject* data, const char* name)
-{
-  vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(0, 0) : -12345.0;
-}
-
 /// mesher (background kept) -> decimator, on `image`.
 struct Pipeline
 {
@@ -97,21 +91,21 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   decimator->Update();
   out = decimator->GetOutput();
 
-  EXPECT_EQ(Field(out, arrays::AngleBound), 12.0);
-  EXPECT_EQ(Field(out, arrays::ImageToMeshDistance), 1.5) << "taken from the mesher's field data";
-  EXPECT_EQ(Field(out, arrays::MeshToImageDistance), 2.0);
-  EXPECT_EQ(Field(out, arrays::VoxelSize), 0.5);
-  EXPECT_EQ(Field(out, arrays::CellsAfter), out->GetNumberOfCells());
-  EXPECT_LT(Field(out, arrays::CellsAfter) * 3, Field(out, arrays::CellsBefore));
-  EXPECT_GT(Field(out, arrays::Merges), 0.0);
-  EXPECT_GE(Field(out, arrays::MergeOffers), Field(out, arrays::Merges));
-  EXPECT_GE(Field(out, arrays::MergesRejectedByQuality), 0.0);
-  EXPECT_GE(Field(out, arrays::MinimumAngle), 12.0 - 1e-9);
-  EXPECT_EQ(Field(out, arrays::InvertedCells), 0.0);
-  EXPECT_EQ(Field(out, arrays::HausdorffBoundsCertified), 1.0);
-  EXPECT_LE(Field(out, arrays::MeasuredImageToMeshDistance), 1.5 + 1e-9);
-  EXPECT_LE(Field(out, arrays::MeasuredMeshToImageDistance), 2.0 + 1e-9);
-  EXPECT_EQ(Field(out, arrays::TopologyMatches), 1.0);
+  EXPECT_EQ(FieldScalar(out, arrays::AngleBound), 12.0);
+  EXPECT_EQ(FieldScalar(out, arrays::ImageToMeshDistance), 1.5) << "taken from the mesher's field data";
+  EXPECT_EQ(FieldScalar(out, arrays::MeshToImageDistance), 2.0);
+  EXPECT_EQ(FieldScalar(out, arrays::VoxelSize), 0.5);
+  EXPECT_EQ(FieldScalar(out, arrays::CellsAfter), out->GetNumberOfCells());
+  EXPECT_LT(FieldScalar(out, arrays::CellsAfter) * 3, FieldScalar(out, arrays::CellsBefore));
+  EXPECT_GT(FieldScalar(out, arrays::Merges), 0.0);
+  EXPECT_GE(FieldScalar(out, arrays::MergeOffers), FieldScalar(out, arrays::Merges));
+  EXPECT_GE(FieldScalar(out, arrays::MergesRejectedByQuality), 0.0);
+  EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 12.0 - 1e-9);
+  EXPECT_EQ(FieldScalar(out, arrays::InvertedCells), 0.0);
+  EXPECT_EQ(FieldScalar(out, arrays::HausdorffBoundsCertified), 1.0);
+  EXPECT_LE(FieldScalar(out, arrays::MeasuredImageToMeshDistance), 1.5 + 1e-9);
+  EXPECT_LE(FieldScalar(out, arrays::MeasuredMeshToImageDistance), 2.0 + 1e-9);
+  EXPECT_EQ(FieldScalar(out, arrays::TopologyMatches), 1.0);
   auto* names = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(arrays::StageName));
   ASSERT_NE(names, nullptr);
   EXPECT_EQ(names->GetValue(0), "decimation setup");
@@ -125,14 +119,14 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   // fewer cells stay (here its moves are all in the background; the core's
   // and the CLI's tests show the cells it saves).
   EXPECT_TRUE(decimator->GetRelocateInteriorVertices());
-  EXPECT_GT(Field(out, arrays::VerticesRelocated), 0.0);
-  const double relocated = Field(out, arrays::CellsAfter);
+  EXPECT_GT(FieldScalar(out, arrays::VerticesRelocated), 0.0);
+  const double relocated = FieldScalar(out, arrays::CellsAfter);
   decimator->RelocateInteriorVerticesOff();
   decimator->Update();
   out = decimator->GetOutput();
-  EXPECT_EQ(Field(out, arrays::VerticesRelocated), 0.0);
-  EXPECT_GE(Field(out, arrays::CellsAfter), relocated);
-  EXPECT_GE(Field(out, arrays::MinimumAngle), 12.0 - 1e-9);
+  EXPECT_EQ(FieldScalar(out, arrays::VerticesRelocated), 0.0);
+  EXPECT_GE(FieldScalar(out, arrays::CellsAfter), relocated);
+  EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 12.0 - 1e-9);
 }
 
 TEST(vtkMeshDecimator, TwoDimensionalImageGivesTrianglesInItsPlane)
@@ -148,7 +142,7 @@ TEST(vtkMeshDecimator, TwoDimensionalImageGivesTrianglesInItsPlane)
   out->GetBounds(bounds);
   EXPECT_EQ(bounds[2], 3.0);
   EXPECT_EQ(bounds[3], 3.0);
-  EXPECT_GE(Field(out, arrays::MinimumAngle), 30.0 - 1e-9);
+  EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 30.0 - 1e-9);
   EXPECT_EQ(CountUnusedPoints(out), 0);
   EXPECT_EQ(CountUnusedPoints(pipeline.Decimator->GetBoundaryOutput()), 0);
 }

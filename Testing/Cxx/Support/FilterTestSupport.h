@@ -15,19 +15,23 @@
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkIdList.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -145,6 +149,14 @@ public:
 private:
   vtkNew<vtkCallbackCommand> Command;
 };
+
+/// The first value of field-data array `name`, or NaN when it is missing (so
+/// that every comparison with it fails).
+inline double FieldScalar(vtkDataObject* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(0, 0) : std::numeric_limits<double>::quiet_NaN();
+}
 
 /// Tetrahedra of `grid` with signed volume <= 0 (VTK's orientation).
 inline int CountNonPositiveTetrahedra(vtkUnstructuredGrid* grid)

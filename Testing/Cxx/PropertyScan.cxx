@@ -1,21 +1,25 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 //
 // labelmesher_property_scan: the property tests' assertions (MesherGuarantees.h,
-// DecimatorGuarantees.h) over as many seeded random images as one asks for,
+// DecimatorGuarantees.h, CurverGuarantees.h) over as many seeded random images as one asks for,
 // outside ctest. The CI suites run a few thousand images; the bugs they missed
 // showed up at rates of 1 in 3,000 to 1 in 10,000, so run this with tens of
 // thousands before trusting a change to the mesher's per-leaf tests or the
 // decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan [--decimate] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate|--curve] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]
 //
 // --decimate: mesher then decimator, with the angle drawn per seed
 // (DrawDecimationParameters); the decimated mesh must keep every guarantee.
+// --curve (2D only): mesher, decimator and curver, C1 or C2 drawn per seed
+// (DrawSmoothness); the curved mesh must keep every guarantee of
+// TestCurverProperties.
 // smooth: GenerateRandomLabelImageWithDescription(seed, dimension) (the images
 // of TestMesherProperties' MesherProperties suites); boxes:
 // GenerateRandomBoxImage(seed, dimension, SIZE) (default 24 in 2D, 14 in 3D).
 // Distance bounds: DrawDistanceBounds(seed), as in the tests.
 
+#include "CurverGuarantees.h"
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
@@ -29,7 +33,8 @@ using namespace labelmesher;
 
 int main(int argc, char** argv)
 {
-  const bool decimate = argc > 1 && std::string(argv[1]) == "--decimate";
+  const bool curve = argc > 1 && std::string(argv[1]) == "--curve";
+  const bool decimate = curve || (argc > 1 && std::string(argv[1]) == "--decimate");
   if (decimate)
   {
     ++argv;
@@ -37,7 +42,7 @@ int main(int argc, char** argv)
   }
   if (argc < 5)
   {
-    std::fprintf(stderr, "usage: %s [--decimate] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--decimate|--curve] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
@@ -50,6 +55,12 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bad arguments: family smooth or boxes, dimension 2 or 3, size >= 2\n");
     return 2;
   }
+  if (curve && dimension != 2)
+  {
+    std::fprintf(stderr, "bad arguments: --curve needs dimension 2\n");
+    return 2;
+  }
+  std::uint64_t misclassifiedLinear = 0, misclassifiedCurved = 0;
   std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed)
   {
@@ -59,8 +70,14 @@ int main(int argc, char** argv)
     const MesherParameters parameters = testing::DrawDistanceBounds(seed);
     const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, parameters);
     DecimationCounts counts;
-    const auto problems = decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
-                                   : testing::ViolatedMesherGuarantees(random.Image, parameters);
+    testing::CurverRun run;
+    const Smoothness smoothness = testing::DrawSmoothness(seed);
+    const auto problems = curve
+      ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run)
+      : decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
+                 : testing::ViolatedMesherGuarantees(random.Image, parameters);
+    misclassifiedLinear += run.MisclassifiedLinear;
+    misclassifiedCurved += run.MisclassifiedCurved;
     cellsBefore += counts.CellsBefore;
     cellsAfter += counts.CellsAfter;
     if (problems.empty())
@@ -70,16 +87,22 @@ int main(int argc, char** argv)
       parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
     if (decimate)
       std::printf(", decimated at %g degrees", decimation.MinimumAngle);
+    if (curve)
+      std::printf(", curved C%d", static_cast<int>(smoothness));
     std::printf(")\n");
     for (const auto& problem : problems)
       std::printf("  %s\n", problem.c_str());
     std::printf("%s", random.Describe().c_str());
     std::fflush(stdout);
   }
-  std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n", decimate ? "decimated " : "",
+  std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n",
+    curve ? "curved " : decimate ? "decimated " : "",
     family.c_str(), dimension, static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
     static_cast<unsigned long long>(failures), static_cast<unsigned long long>(count));
-  if (decimate)
+  if (curve)
+    std::printf("misclassified pixels: %llu linear, %llu curved\n", static_cast<unsigned long long>(misclassifiedLinear),
+      static_cast<unsigned long long>(misclassifiedCurved));
+  else if (decimate)
     std::printf("cells (background included): %llu before, %llu after decimation\n",
       static_cast<unsigned long long>(cellsBefore), static_cast<unsigned long long>(cellsAfter));
   return failures == 0 ? 0 : 1;

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <map>
+#include <set>
 #include <string>
 
 namespace labelmesher
@@ -55,34 +57,98 @@ void ValidateLinearMesh(const SimplexMesh& mesh)
   }
 }
 
-/// Section 4.1: one smooth Bézier path per interface chain; the inner control
-/// points of its segments become the targets of the chain edges' control points.
-std::vector<std::pair<std::int64_t, Point2>> SmoothInterfaces(const SimplexMesh& linear,
-  const CurvedMesh& curved, const std::vector<InterfaceChain>& chains,
-  const SmoothingOptions& options, std::size_t& curvedEdges)
+/// Section 4.1: one smooth Bézier path per interface chain, a piece per chain
+/// segment whose inner control points become the targets of that edge's.
+std::vector<CurvePiece> SmoothInterfaces(const SimplexMesh& linear, const CurvedMesh& curved,
+  const std::vector<InterfaceChain>& chains, const CurvingParameters& parameters)
 {
-  std::vector<std::pair<std::int64_t, Point2>> prescribed;
-  curvedEdges = 0;
-  for (const InterfaceChain& chain : chains)
+  const SmoothingOptions& options = parameters.Smoothing;
+  // C1 curves follow the image when there is one (BoundaryFit.h); C2 paths
+  // are fixed by the vertices.
+  const bool fit = parameters.Image.Image && options.Continuity == Smoothness::C1;
+  std::vector<std::vector<BoundarySample>> samples;
+  if (fit)
+    samples = CollectBoundarySamples(linear, chains, parameters.Image, parameters.SampleReach);
+  std::vector<CurvePiece> pieces;
+  for (std::size_t c = 0; c < chains.size(); ++c)
   {
+    const InterfaceChain& chain = chains[c];
     std::vector<Point2> vertices;
     vertices.reserve(chain.Vertices.size());
     for (std::int64_t v : chain.Vertices)
     {
       vertices.push_back({ linear.Points[v][0], linear.Points[v][1] });
     }
-    const auto segments = SmoothChain(vertices, chain.Closed, options);
+    const auto segments = fit
+      ? FitChain(vertices, chain.Closed, samples[c], { options.Tension, parameters.FitRegularisation, 3 })
+      : SmoothChain(vertices, chain.Closed, options);
     for (std::size_t s = 0; s < segments.size(); ++s)
     {
-      const std::int64_t a = chain.Vertices[s];
-      const std::int64_t b = chain.Vertices[(s + 1) % chain.Vertices.size()];
-      const auto ids = curved.EdgePoints(a, b);
-      prescribed.emplace_back(ids[0], segments[s][0]);
-      prescribed.emplace_back(ids[1], segments[s][1]);
-      ++curvedEdges;
+      CurvePiece piece;
+      piece.From = chain.Vertices[s];
+      piece.To = chain.Vertices[(s + 1) % chain.Vertices.size()];
+      piece.ControlIds = curved.EdgePoints(piece.From, piece.To);
+      piece.Fitted = segments[s];
+      piece.Left = chain.FirstMaterial;
+      piece.Right = chain.SecondMaterial;
+      pieces.push_back(piece);
     }
   }
+  return pieces;
+}
+
+/// The pieces' inner control points at their scales, as the untangler's targets.
+std::vector<std::pair<std::int64_t, Point2>> Targets(const SimplexMesh& linear, const std::vector<CurvePiece>& pieces)
+{
+  std::vector<std::pair<std::int64_t, Point2>> prescribed;
+  prescribed.reserve(2 * pieces.size());
+  for (const CurvePiece& piece : pieces)
+  {
+    const auto p = piece.ControlPoints(linear);
+    prescribed.emplace_back(piece.ControlIds[0], p[1]);
+    prescribed.emplace_back(piece.ControlIds[1], p[2]);
+  }
   return prescribed;
+}
+
+/// Shortens the curved pieces on the edges of `cells`, or where a cell has no
+/// curved edge, those ending at its corners (a cell squeezed by a neighbour's
+/// curve); false when none was left to shorten.
+bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size_t>& cells,
+  std::vector<CurvePiece>& pieces, std::set<std::size_t>& shortened)
+{
+  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> pieceOf;
+  std::multimap<std::int64_t, std::size_t> piecesAt;
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    pieceOf[{ std::min(pieces[p].From, pieces[p].To), std::max(pieces[p].From, pieces[p].To) }] = p;
+    piecesAt.emplace(pieces[p].From, p);
+    piecesAt.emplace(pieces[p].To, p);
+  }
+  std::set<std::size_t> chosen;
+  for (std::size_t c : cells)
+  {
+    const std::int64_t* v = linear.Cell(c);
+    std::set<std::size_t> own;
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto it = pieceOf.find({ std::min(v[k], v[(k + 1) % 3]), std::max(v[k], v[(k + 1) % 3]) });
+      if (it != pieceOf.end() && pieces[it->second].Scale > 0.0)
+        own.insert(it->second);
+    }
+    if (own.empty())
+      for (int k = 0; k < 3; ++k)
+        for (auto [it, end] = piecesAt.equal_range(v[k]); it != end; ++it)
+          if (pieces[it->second].Scale > 0.0)
+            own.insert(it->second);
+    chosen.insert(own.begin(), own.end());
+  }
+  for (std::size_t p : chosen)
+  {
+    ShortenPiece(pieces[p]);
+    shortened.insert(p);
+  }
+  return !chosen.empty();
 }
 
 /// A box no mesh vertex lies on: without a known image border every interface is curved.
@@ -130,8 +196,8 @@ CurvingResult CurveMesh(
     result.NumberOfClosedChains += chain.Closed ? 1 : 0;
   }
   result.Mesh = MakeStraightCurvedMesh(result.Linear);
-  const auto prescribed = SmoothInterfaces(
-    result.Linear, result.Mesh, chains, parameters.Smoothing, result.NumberOfCurvedEdges);
+  std::vector<CurvePiece> pieces = SmoothInterfaces(result.Linear, result.Mesh, chains, parameters);
+  result.NumberOfCurvedEdges = pieces.size();
   result.Timings.push_back({ "smooth boundaries", SecondsSince(start) });
 
   // How many cells curving the boundary alone would break (the dissertation's
@@ -139,7 +205,7 @@ CurvingResult CurveMesh(
   start = Clock::now();
   {
     std::vector<Point2> boundaryOnly = result.Mesh.ControlPoints;
-    for (const auto& [id, target] : prescribed)
+    for (const auto& [id, target] : Targets(result.Linear, pieces))
     {
       boundaryOnly[static_cast<std::size_t>(id)] = target;
     }
@@ -147,15 +213,51 @@ CurvingResult CurveMesh(
   }
   result.Timings.push_back({ "validity before untangling", SecondsSince(start) });
 
-  start = Clock::now();
-  ProgressObserver untangling;
-  untangling.Callback = [&observer](const std::string& stage, double fraction) {
-    return observer.Report(stage, 0.05 + 0.85 * fraction);
-  };
-  const UntanglingResult untangled =
-    UntangleControlNets(result.Mesh, prescribed, parameters.Untangling, untangling);
-  result.UntanglingSteps = untangled.Steps;
-  result.Timings.push_back({ "untangle", SecondsSince(start) });
+  // Pieces that break a distance bound, and then pieces of cells that
+  // untangling cannot make valid, are shortened until neither happens
+  // (CurvePieces.h); shortening for validity can move a curve, so the bounds
+  // are tested again after it.
+  const bool bounded = parameters.Image.Image && parameters.Bounds.ImageToMesh >= 0.0 &&
+    parameters.Bounds.MeshToImage >= 0.0;
+  const CurvedMesh straight = result.Mesh;
+  std::set<std::size_t> shortenedForValidity;
+  std::set<std::size_t> shortenedForBounds;
+  for (int round = 0;; ++round)
+  {
+    if (bounded)
+    {
+      start = Clock::now();
+      const std::vector<CurvePiece> before = pieces;
+      const FidelityOutcome outcome = KeepDistanceBounds(result.Linear, pieces, parameters.Image, parameters.Bounds);
+      for (std::size_t p = 0; p < pieces.size(); ++p)
+        if (pieces[p].Scale != before[p].Scale)
+          shortenedForBounds.insert(p);
+      result.UncertifiedPieces = outcome.Uncertified;
+      result.Timings.push_back({ "distance bounds", SecondsSince(start) });
+    }
+    start = Clock::now();
+    ProgressObserver untangling;
+    untangling.Callback = [&observer, round](const std::string& stage, double fraction) {
+      return observer.Report(stage, std::min(0.9, 0.05 + 0.85 * (round + fraction) / (round + 1.0)));
+    };
+    result.Mesh = straight;
+    const UntanglingResult untangled =
+      UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling, untangling);
+    result.UntanglingSteps = untangled.Steps;
+    result.UntanglingRounds = round + 1;
+    result.Timings.push_back({ "untangle", SecondsSince(start) });
+    if (untangled.Valid || round + 1 >= parameters.MaximumShorteningRounds ||
+      !ShortenPiecesOfCells(result.Linear, untangled.InvalidCells, pieces, shortenedForValidity))
+      break;
+  }
+  result.PiecesShortenedForBounds = shortenedForBounds.size();
+  result.PiecesShortenedForValidity = shortenedForValidity.size();
+  for (const CurvePiece& piece : pieces)
+  {
+    result.StraightenedPieces += piece.Scale == 0.0 ? 1 : 0;
+    result.ShortenedPieces += piece.Scale < 1.0 ? 1 : 0;
+  }
+  result.Pieces = pieces;
 
   // Section 4.2: a proven bound for every cell. A cell is valid when either the
   // control net (Theorem 4.2.1) or the subdivided Jacobian proves det J > 0.

@@ -14,6 +14,9 @@
  */
 
 #include "Curving/BoundaryEars.h"
+#include "Curving/BoundaryFit.h"
+#include "Curving/CurveFidelity.h"
+#include "Curving/CurvePieces.h"
 #include "Curving/CurvedMesh.h"
 #include "Curving/ElasticUntangler.h"
 #include "Curving/InterfaceChains.h"
@@ -39,6 +42,20 @@ struct CurvingParameters
   /// image border). Unset: no border, every interface is curved.
   bool HasBorder = false;
   Box2 Border{ 0.0, 0.0, 0.0, 0.0 };
+  /// The image the mesh came from (optional). With it, C1 interfaces are
+  /// fitted to the image's boundary (BoundaryFit.h).
+  ImageOnMesh Image;
+  /// Pixel edges farther than this from every segment of their materials are
+  /// not fitted (voxels).
+  double SampleReach = 3.0;
+  /// Weight of the pull towards Figure 17a's handles (dimensionless, >= 0).
+  double FitRegularisation = 0.05;
+  /// With an image: the distance bounds the curves keep (voxels; both must be
+  /// >= 0 to be enforced), and the polyline tolerance that certifies them.
+  CurveBounds Bounds{ -1.0, -1.0, 1.0 / 256.0 };
+  /// Most untangling rounds, each after shortening the pieces of the cells the
+  /// previous one left invalid.
+  int MaximumShorteningRounds = 8;
 };
 
 struct CurvingResult
@@ -60,6 +77,17 @@ struct CurvingResult
   std::size_t NumberOfChains = 0;
   std::size_t NumberOfClosedChains = 0;
   std::size_t NumberOfCurvedEdges = 0;
+  /// The interface pieces at their final scales (CurvePieces.h).
+  std::vector<CurvePiece> Pieces;
+  /// Pieces left below scale 1, and of those the straight ones.
+  std::size_t ShortenedPieces = 0;
+  std::size_t StraightenedPieces = 0;
+  /// Pieces shortened at least once to keep a distance bound, and to let untangling succeed.
+  std::size_t PiecesShortenedForBounds = 0;
+  std::size_t PiecesShortenedForValidity = 0;
+  /// Straight pieces the distance test could not certify (expected 0).
+  std::size_t UncertifiedPieces = 0;
+  int UntanglingRounds = 0;
   std::vector<StageTiming> Timings;
 };
 

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace labelmesher
 {
@@ -54,9 +56,16 @@ double SampledMinimumJacobian(const CubicTriangle& triangle, int n)
   return minimum;
 }
 
-JointContinuity MeasureJointContinuity(
-  const SimplexMesh& linear, const CurvedMesh& curved, const Box2& border, Smoothness smoothness)
+JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved, const Box2& border,
+  Smoothness smoothness, const std::vector<CurvePiece>& pieces)
 {
+  std::map<std::pair<std::int64_t, std::int64_t>, double> scales;
+  for (const CurvePiece& piece : pieces)
+    scales[{ std::min(piece.From, piece.To), std::max(piece.From, piece.To) }] = piece.Scale;
+  auto pieceScale = [&scales](std::int64_t a, std::int64_t b) {
+    const auto it = scales.find({ std::min(a, b), std::max(a, b) });
+    return it == scales.end() ? 1.0 : it->second;
+  };
   JointContinuity result;
   for (const InterfaceChain& chain : ExtractInterfaceChains(linear, border))
   {
@@ -89,6 +98,19 @@ JointContinuity MeasureJointContinuity(
       const Point2 secondOut{ 6.0 * (out2[0] - 2.0 * out1[0] + pv[0]), 6.0 * (out2[1] - 2.0 * out1[1] + pv[1]) };
       const double scale = std::max({ Norm(firstIn), Norm(firstOut), Norm(secondIn), Norm(secondOut) });
       ++result.Joints;
+      const double smaller = std::min(pieceScale(a, v), pieceScale(v, b));
+      if (smaller == 0.0)
+      {
+        ++result.StraightJoints;
+        continue;
+      }
+      if (smaller < 1.0)
+      {
+        ++result.ShortenedJoints;
+        result.FirstDerivativeMismatch =
+          std::max(result.FirstDerivativeMismatch, Norm(Sub(Unit(firstIn), Unit(firstOut))));
+        continue;
+      }
       if (smoothness == Smoothness::C2)
       {
         result.FirstDerivativeMismatch =

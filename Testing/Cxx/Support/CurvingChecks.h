@@ -35,12 +35,19 @@ struct JointContinuity
   double SecondDerivativeMismatch = 0.0;
   /// Largest distance of a chain vertex from its linear position.
   double VertexMovement = 0.0;
+  /// Joints next to a straightened piece (no continuity asked), and joints
+  /// next to a shortened one (tangent continuity only).
+  std::size_t StraightJoints = 0;
+  std::size_t ShortenedJoints = 0;
 };
 
 /// Measures continuity at every interior joint of every chain of `linear`
-/// (extracted with `border`) on the control points of `curved`.
+/// (extracted with `border`) on the control points of `curved`: C1 (unit
+/// tangents) or C2 (first and second derivatives) where both pieces at the
+/// joint are at scale 1 in `pieces` (CurvePieces.h; edges not listed count as
+/// scale 1), unit tangents where both are curved, nothing where one is straight.
 JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved,
-  const Box2& border, Smoothness smoothness);
+  const Box2& border, Smoothness smoothness, const std::vector<CurvePiece>& pieces = {});
 
 } // namespace testing
 } // namespace labelmesher

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Least-squares C1 handles of a chain's cubic path against the image's boundary samples.
+#include "Curving/BoundaryFit.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace labelmesher
+{
+namespace
+{
+
+double Distance(const Point2& a, const Point2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+
+/// cos 60°: a fitted handle may turn at most 60 degrees from either chord at its vertex.
+constexpr double kMinimumHandleCosine = 0.5;
+
+/// The chain seen as segments: their end vertices and chord lengths.
+struct ChainGeometry
+{
+  const std::vector<Point2>& Vertices;
+  bool Closed;
+  std::size_t Count() const { return Closed ? Vertices.size() : Vertices.size() - 1; }
+  std::size_t Start(std::size_t s) const { return s; }
+  std::size_t End(std::size_t s) const { return (s + 1) % Vertices.size(); }
+  double Chord(std::size_t s) const { return Distance(Vertices[Start(s)], Vertices[End(s)]); }
+};
+
+/// Figure 17a's handle at vertex i per unit chord: t (P_{i+1} − P_{i−1}) / (|P_{i−1}P_i| + |P_iP_{i+1}|),
+/// the end vertex of an open chain standing in for its missing neighbour.
+Point2 TangentHandle(const std::vector<Point2>& v, bool closed, std::size_t i, double tension)
+{
+  const std::size_t n = v.size();
+  const Point2& previous = i > 0 ? v[i - 1] : (closed ? v[n - 1] : v[0]);
+  const Point2& next = i + 1 < n ? v[i + 1] : (closed ? v[0] : v[n - 1]);
+  const double around = Distance(previous, v[i]) + Distance(v[i], next);
+  if (around <= 0.0)
+    return { 0.0, 0.0 };
+  return { tension * (next[0] - previous[0]) / around, tension * (next[1] - previous[1]) / around };
+}
+
+struct Bernstein
+{
+  double B0, B1, B2, B3;
+  explicit Bernstein(double t)
+  {
+    const double u = 1.0 - t;
+    B0 = u * u * u;
+    B1 = 3.0 * u * u * t;
+    B2 = 3.0 * u * t * t;
+    B3 = t * t * t;
+  }
+};
+
+/// The segment's control points for handles m.
+std::array<Point2, 4> SegmentControlPoints(
+  const ChainGeometry& chain, const std::vector<Point2>& m, std::size_t s)
+{
+  const Point2& a = chain.Vertices[chain.Start(s)];
+  const Point2& b = chain.Vertices[chain.End(s)];
+  const double c = chain.Chord(s);
+  const Point2& ma = m[chain.Start(s)];
+  const Point2& mb = m[chain.End(s)];
+  return { a, Point2{ a[0] + c * ma[0], a[1] + c * ma[1] }, Point2{ b[0] - c * mb[0], b[1] - c * mb[1] }, b };
+}
+
+/// Newton steps on |B(t) − q|² from t, kept in [0, 1].
+double Reproject(const std::array<Point2, 4>& p, const Point2& q, double t)
+{
+  for (int step = 0; step < 3; ++step)
+  {
+    const double u = 1.0 - t;
+    Point2 value, first, second;
+    for (int a = 0; a < 2; ++a)
+    {
+      value[a] = u * u * u * p[0][a] + 3 * u * u * t * p[1][a] + 3 * u * t * t * p[2][a] + t * t * t * p[3][a];
+      first[a] = 3 * (u * u * (p[1][a] - p[0][a]) + 2 * u * t * (p[2][a] - p[1][a]) + t * t * (p[3][a] - p[2][a]));
+      second[a] = 6 * (u * (p[2][a] - 2 * p[1][a] + p[0][a]) + t * (p[3][a] - 2 * p[2][a] + p[1][a]));
+    }
+    const double dx = value[0] - q[0], dy = value[1] - q[1];
+    const double gradient = dx * first[0] + dy * first[1];
+    const double hessian = first[0] * first[0] + first[1] * first[1] + dx * second[0] + dy * second[1];
+    if (!(hessian > 0.0))
+      break;
+    t = std::clamp(t - gradient / hessian, 0.0, 1.0);
+  }
+  return t;
+}
+
+/// One least-squares solve for the handles with the samples at `parameters`.
+std::vector<Point2> SolveHandles(const ChainGeometry& chain, const std::vector<BoundarySample>& samples,
+  const std::vector<double>& parameters, const std::vector<Point2>& prior, double regularisation)
+{
+  using Index = Eigen::Index;
+  const std::size_t n = chain.Vertices.size();
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> rhs = Eigen::Matrix<double, Eigen::Dynamic, 2>::Zero(static_cast<Index>(n), 2);
+  // The pull towards the prior, scaled by the vertex's chords so that it is a
+  // squared length in mesh units like the samples' residuals.
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    double chord = 0.0;
+    int count = 0;
+    for (std::size_t s : { (i + n - 1) % n, i })
+    {
+      if (s < chain.Count() && (chain.Start(s) == i || chain.End(s) == i))
+      {
+        chord += chain.Chord(s);
+        ++count;
+      }
+    }
+    chord = count > 0 ? chord / count : 1.0;
+    const double w = regularisation * chord * chord;
+    entries.emplace_back(static_cast<Index>(i), static_cast<Index>(i), w);
+    rhs(static_cast<Index>(i), 0) += w * prior[i][0];
+    rhs(static_cast<Index>(i), 1) += w * prior[i][1];
+  }
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    const std::size_t s = samples[k].Segment;
+    const std::size_t i = chain.Start(s), j = chain.End(s);
+    const Point2& a = chain.Vertices[i];
+    const Point2& b = chain.Vertices[j];
+    const double c = chain.Chord(s);
+    const Bernstein w(parameters[k]);
+    // B(t) = (B0 + B1) a + (B2 + B3) b + c B1 m_i − c B2 m_j.
+    const double alpha = c * w.B1, beta = -c * w.B2;
+    const Point2 r{ samples[k].Point[0] - (w.B0 + w.B1) * a[0] - (w.B2 + w.B3) * b[0],
+      samples[k].Point[1] - (w.B0 + w.B1) * a[1] - (w.B2 + w.B3) * b[1] };
+    const Index ii = static_cast<Index>(i), jj = static_cast<Index>(j);
+    entries.emplace_back(ii, ii, alpha * alpha);
+    entries.emplace_back(jj, jj, beta * beta);
+    entries.emplace_back(ii, jj, alpha * beta);
+    entries.emplace_back(jj, ii, alpha * beta);
+    for (int d = 0; d < 2; ++d)
+    {
+      rhs(ii, d) += alpha * r[d];
+      rhs(jj, d) += beta * r[d];
+    }
+  }
+  Eigen::SparseMatrix<double> matrix(static_cast<Index>(n), static_cast<Index>(n));
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(matrix);
+  if (solver.info() != Eigen::Success)
+    throw std::runtime_error("FitChain: the least-squares system could not be factorised");
+  const Eigen::Matrix<double, Eigen::Dynamic, 2> solution = solver.solve(rhs);
+  std::vector<Point2> m(n);
+  for (std::size_t i = 0; i < n; ++i)
+    m[i] = { solution(static_cast<Index>(i), 0), solution(static_cast<Index>(i), 1) };
+  return m;
+}
+
+} // namespace
+
+std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices, bool closed,
+  const std::vector<BoundarySample>& samples, const FitOptions& options)
+{
+  // A closed chain of fewer than three vertices cannot bend (and a triangle mesh does not make one).
+  if (vertices.size() < 2 || (closed && vertices.size() < 3))
+    return SmoothChain(vertices, closed, { Smoothness::C1, 0.0 });
+  const ChainGeometry chain{ vertices, closed };
+  std::vector<Point2> prior(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    prior[i] = TangentHandle(vertices, closed, i, options.Tension);
+
+  std::vector<Point2> m = prior;
+  if (!samples.empty())
+  {
+    std::vector<double> parameters(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      parameters[k] = samples[k].Parameter;
+    for (int round = 0; round <= options.ParameterCorrections; ++round)
+    {
+      m = SolveHandles(chain, samples, parameters, prior, options.Regularisation);
+      for (std::size_t k = 0; round < options.ParameterCorrections && k < samples.size(); ++k)
+        parameters[k] = Reproject(SegmentControlPoints(chain, m, samples[k].Segment), samples[k].Point, parameters[k]);
+    }
+  }
+  // A handle that leaves its vertex backwards or steeply across a chord
+  // makes the cubic loop or cross its neighbour: such a vertex keeps
+  // Figure 17a's handle. A handle longer than half a chord can loop too;
+  // shortening it along its own direction keeps the joint's tangent.
+  const std::size_t n = vertices.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    Point2& h = m[i];
+    const double length = std::hypot(h[0], h[1]);
+    bool steep = !(length > 0.0);
+    for (std::size_t s : { (i + n - 1) % n, i })
+    {
+      if (s >= chain.Count() || (chain.Start(s) != i && chain.End(s) != i))
+        continue;
+      const Point2& a = vertices[chain.Start(s)];
+      const Point2& b = vertices[chain.End(s)];
+      const double c = chain.Chord(s);
+      if (c > 0.0 && length > 0.0)
+        steep = steep || (h[0] * (b[0] - a[0]) + h[1] * (b[1] - a[1])) < kMinimumHandleCosine * c * length;
+    }
+    if (steep)
+      h = prior[i];
+    const double kept = std::hypot(h[0], h[1]);
+    if (kept > 0.5)
+      h = { h[0] * 0.5 / kept, h[1] * 0.5 / kept };
+  }
+  std::vector<std::array<Point2, 2>> out(chain.Count());
+  for (std::size_t s = 0; s < chain.Count(); ++s)
+  {
+    const auto p = SegmentControlPoints(chain, m, s);
+    out[s] = { p[1], p[2] };
+  }
+  return out;
+}
+
+} // namespace labelmesher

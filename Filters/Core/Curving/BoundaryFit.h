@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_BoundaryFit_h
+#define labelmesher_BoundaryFit_h
+
+/**
+ * @file BoundaryFit.h
+ * A C1 cubic Bézier path through a chain's vertices that follows the image
+ * (an extension of section 4.1): the interpolating constructions of Figure 17
+ * are fixed by the vertices alone, and on a decimated mesh, whose vertices are
+ * few, they are less accurate than the chords (section 5.2.3 measured on the
+ * shared images). Here each vertex P_i gets a free handle vector m_i: segment
+ * s from P_s to P_e (chord length c_s) has inner control points
+ * P_s + c_s m_s and P_e − c_s m_e. The handles at a joint are parallel and
+ * proportional to the chords, so the path is C1 in chord-length
+ * parametrisation (G1 geometrically), exactly the family of Figure 17a; and
+ * the curve is linear in the m_i, so fitting the boundary samples
+ * (BoundarySamples.h) is a linear least-squares problem, one per chain. A
+ * small Tikhonov term pulls each m_i towards Figure 17a's handle (so that
+ * segments without samples keep that shape), parameters are corrected by
+ * projecting the samples on the curve (Hoschek). A vertex whose fitted handle
+ * turns more than 60° from either of its chords keeps Figure 17a's handle
+ * (a handle pointing backwards makes the cubic loop), and handles longer than
+ * half their chords are shortened along their own direction.
+ */
+
+#include "Curving/BoundarySamples.h"
+#include "Curving/SmoothBoundary.h"
+
+#include <array>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct FitOptions
+{
+  double Tension = 1.0 / 3.0;      ///< the Figure 17a handle the fit is pulled towards (dimensionless)
+  double Regularisation = 0.05;    ///< weight of that pull per vertex, relative to one sample
+  int ParameterCorrections = 3;    ///< fit / re-project rounds
+};
+
+/// Inner control points of each segment, in the order of SmoothChain. With no
+/// samples this is SmoothChain's C1 path with the given tension.
+std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices, bool closed,
+  const std::vector<BoundarySample>& samples, const FitOptions& options);
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_testing_CurverGuarantees_h
+#define labelmesher_testing_CurverGuarantees_h
+
+/**
+ * @file CurverGuarantees.h
+ * Every guarantee of the curved 2D mesh on one image, through the whole
+ * pipeline of `labelmesher curve`: mesher, decimator, foreground, curver with
+ * the image and the mesher's distance bounds. Asserted independently of the
+ * curver's own tests: det J sampled densely on every cell proven valid,
+ * continuity at every joint on the output control points (CurvingChecks.h),
+ * both distance bounds per material measured on the curves, no crossing
+ * interfaces and the image's topology (Checks/CurvedBoundary.h). Shared by the
+ * curver's property test and labelmesher_property_scan --curve.
+ */
+
+#include "Curving/BezierCurver.h"
+#include "Decimation/MeshDecimator.h"
+#include "LabelOctreeMesher.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace labelmesher
+{
+namespace testing
+{
+
+struct CurverRun
+{
+  SimplexMesh Linear;   ///< the decimated foreground mesh that was curved
+  CurvingResult Result;
+  std::size_t MisclassifiedLinear = 0;
+  std::size_t MisclassifiedCurved = 0;
+};
+
+/// The curving a test uses for `seed`: C1 or C2 with even odds.
+Smoothness DrawSmoothness(std::uint64_t seed);
+
+/// Runs the pipeline on `image`; one line per violated guarantee (empty: all
+/// hold). A thrown exception counts as a violation. `run`, when given,
+/// receives the meshes and the pixel accuracy of both.
+std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run = nullptr);
+
+} // namespace testing
+} // namespace labelmesher
+
+#endif

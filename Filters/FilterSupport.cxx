@@ -9,6 +9,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -91,6 +92,14 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& con
   auto array = vtkSmartPointer<vtkCellArray>::New();
   array->SetData(offsets, ids);
   return array;
+}
+
+double ResolveBound(double set, vtkDataObject* input, const char* name)
+{
+  if (set >= 0.0)
+    return set;
+  vtkDataArray* recorded = input ? input->GetFieldData()->GetArray(name) : nullptr;
+  return recorded && recorded->GetNumberOfTuples() > 0 ? recorded->GetComponent(0, 0) : -1.0;
 }
 
 void AddScalarField(vtkFieldData* fd, const char* name, double value)

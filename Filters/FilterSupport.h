@@ -28,6 +28,8 @@
 #include <utility>
 #include <vector>
 
+class vtkDataObject;
+
 class vtkAlgorithm;
 class vtkDataArray;
 class vtkInformationVector;
@@ -58,6 +60,8 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& con
 
 /// One-tuple double array `name` = value.
 void AddScalarField(vtkFieldData* fd, const char* name, double value);
+/// `set` when >= 0, else the first value of `input`'s field array `name`, else -1.
+double ResolveBound(double set, vtkDataObject* input, const char* name);
 /// Array `name` of `values`, as ArrayT (vtkIntArray, vtkDoubleArray, vtkStringArray).
 template <typename ArrayT, typename T>
 void AddField(vtkFieldData* fd, const char* name, const std::vector<T>& values)

@@ -4,6 +4,7 @@
 #include "vtkBezierCurver.h"
 
 #include "Curving/BezierCurver.h"
+#include "Checks/CurvedBoundary.h"
 #include "Curving/CurvedMeshLocator.h"
 #include "FilterSupport.h"
 #include "LabelImageConversion.h"
@@ -279,6 +280,28 @@ void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result
   AddScalarField(fd, arrays::ClosedInterfaceChains, static_cast<double>(result.NumberOfClosedChains));
   AddScalarField(fd, arrays::CurvedEdges, static_cast<double>(result.NumberOfCurvedEdges));
   AddScalarField(fd, arrays::SplitEars, static_cast<double>(result.SplitEars));
+  AddScalarField(fd, arrays::ShortenedPieces, static_cast<double>(result.ShortenedPieces));
+  AddScalarField(fd, arrays::StraightenedPieces, static_cast<double>(result.StraightenedPieces));
+  AddScalarField(fd, arrays::PiecesShortenedForBounds, static_cast<double>(result.PiecesShortenedForBounds));
+  AddScalarField(fd, arrays::PiecesShortenedForValidity, static_cast<double>(result.PiecesShortenedForValidity));
+  AddScalarField(fd, arrays::UncertifiedPieces, static_cast<double>(result.UncertifiedPieces));
+  AddScalarField(fd, arrays::UntanglingRounds, result.UntanglingRounds);
+}
+
+/// Pass 5 (field data): the curves' distances, crossings and topology against the image.
+void AddCurvedMeasurements(
+  vtkFieldData* fd, const labelmesher::CurvedMeshReport& report, const labelmesher::CurveBounds& bounds)
+{
+  AddScalarField(fd, arrays::ImageToMeshDistance, bounds.ImageToMesh);
+  AddScalarField(fd, arrays::MeshToImageDistance, bounds.MeshToImage);
+  AddScalarField(fd, arrays::CurvedMeasureResolution, report.Resolution);
+  AddScalarField(fd, arrays::MeasuredImageToMeshDistance, report.Curves.ImageToMesh);
+  AddScalarField(fd, arrays::MeasuredMeshToImageDistance, report.Curves.MeshToImage);
+  AddScalarField(fd, arrays::InterfaceCrossings, static_cast<double>(report.Crossings));
+  bool matches = true;
+  for (const auto& [material, comparison] : report.Topology)
+    matches = matches && comparison.Matches();
+  AddScalarField(fd, arrays::TopologyMatches, matches ? 1.0 : 0.0);
 }
 
 } // anonymous namespace
@@ -349,6 +372,13 @@ int vtkBezierCurver::RequestData(
     return 1;
   }
 
+  if (imageData)
+  {
+    parameters.Image = { &image, pixelToMesh };
+    parameters.Bounds.ImageToMesh = labelmesher::ResolveBound(this->ImageToMeshDistance, input, arrays::ImageToMeshDistance);
+    parameters.Bounds.MeshToImage = labelmesher::ResolveBound(this->MeshToImageDistance, input, arrays::MeshToImageDistance);
+  }
+
   // ---- (3) curve ----
   const double curveShare = imageData ? 0.8 : 1.0;
   labelmesher::CurvingResult result;
@@ -387,6 +417,8 @@ int vtkBezierCurver::RequestData(
       labelmesher::MeasurePixelAccuracy(result.Mesh, image, pixelToMesh);
     AddAccuracy(fd, linearAccuracy, curvedAccuracy, image);
     clock.Finish("pixel accuracy");
+    AddCurvedMeasurements(fd, labelmesher::MeasureCurvedMesh(image, result.Mesh, parameters.Image), parameters.Bounds);
+    clock.Finish("curved distances");
   }
   labelmesher::AddStageTimings(fd, result.Timings);
   this->UpdateProgress(1.0);
@@ -409,4 +441,6 @@ void vtkBezierCurver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
+  os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
+  os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";
 }

@@ -13,23 +13,38 @@
  *
  * 1. Every interface between two materials, and between a material and the
  *    outside, becomes a cubic Bézier path through the linear mesh's boundary
- *    vertices (section 4.1): C1 by the tangent construction of Figure 17a, C2 by
- *    the B-spline system 6 S_i = B_{i-1} + 4 B_i + B_{i+1} (Figure 17c). Closed
- *    loops are periodic; chains ending where three or more materials meet, or on
- *    the image border, are open and keep their end vertices. Edges on the image
- *    border stay straight.
- * 2. The other control points (interior edges, cell centres) follow by linear
+ *    vertices (section 4.1). C1 (the default): with the image on port 1, the
+ *    handles of Figure 17a's family are fitted by least squares to the
+ *    midpoints of the pixel edges between the two materials
+ *    (Core/Curving/BoundaryFit.h), so that the curve follows the image between
+ *    vertices; without the image, the tangent construction of Figure 17a. C2:
+ *    the B-spline system 6 S_i = B_{i-1} + 4 B_i + B_{i+1} (Figure 17c), which
+ *    the vertices fix entirely. Closed loops are periodic; chains ending where
+ *    three or more materials meet, or on the image border, are open and keep
+ *    their end vertices. Edges on the image border stay straight.
+ * 2. With the image and distance bounds (ImageToMeshDistance,
+ *    MeshToImageDistance, by default the bounds the input records), every piece
+ *    of curve that would break a bound is shortened -- both handles scaled by
+ *    1/2, 1/4, then straight -- until both bounds hold on the curves, certified
+ *    on polylines within 1/256 voxel of them (Core/Curving/CurveFidelity.h).
+ * 3. The other control points (interior edges, cell centres) follow by linear
  *    elasticity on the control nets, the boundary displacement applied in
  *    increasing fractions until every cell is valid (section 4.3, Figure 21).
- * 3. Every cell's Jacobian determinant, a quartic Bézier triangle (Table 1), is
+ *    Cells still invalid have their curved edges (or, if none, the curves at
+ *    their corners) shortened the same way and untangling runs again, up to 8
+ *    rounds; straight pieces make a straight, valid mesh, so this ends valid.
+ *    A shortened piece keeps its end tangents' directions: the joints stay
+ *    tangent continuous (G1); C1 or C2 holds where neither piece was shortened.
+ * 4. Every cell's Jacobian determinant, a quartic Bézier triangle (Table 1), is
  *    bounded by subdivision (section 4.2); a cell is valid when that bound or its
- *    control net (Theorem 4.2.1) proves det J > 0.
+ *    control net (with the corrected conditions of JacobianBound.h) proves det J > 0.
  *
  * Input port 0: vtkUnstructuredGrid of VTK_TRIANGLE cells lying in one axis plane
  * (x-y, x-z or y-z; e.g. vtkLabelOctreeMesher's 2D output) with an integer cell
  * array `Material` (0 = background). Input port 1 (optional): the label image the
  * mesh came from (2D vtkImageData of integer labels, as for vtkLabelOctreeMesher);
- * when given, its border box is the border whose edges stay straight, and the
+ * when given, its border box is the border whose edges stay straight, the C1
+ * curves are fitted to it, the distance bounds are kept against it, and the
  * accuracy of the linear and of the curved mesh is measured on it. Without it
  * every interface is curved, including any that runs along the image border.
  *
@@ -54,7 +69,18 @@
  * resampled to square pixels of its smallest spacing; a centre exactly on an
  * edge counts for the first cell found) and, one tuple per label, `AccuracyMaterial`,
  * `MissedPixelsLinear`, `MissedPixelsCurved` (its pixels given another material),
- * `ClaimedPixelsLinear`, `ClaimedPixelsCurved` (other pixels given it).
+ * `ClaimedPixelsLinear`, `ClaimedPixelsCurved` (other pixels given it);
+ * `ShortenedPieces`, `StraightenedPieces` (interface pieces left shortened, and
+ * of those straight), `PiecesShortenedForBounds`, `PiecesShortenedForValidity`,
+ * `UncertifiedPieces` (straight pieces the distance test could not certify,
+ * expected 0), `UntanglingRounds`; and measured on the curves
+ * (Core/Checks/CurvedBoundary.h, on polylines within 1/1024 voxel of the
+ * curves; the figures may exceed the true distances by at most
+ * `CurvedMeasureResolution` = 2/1024 voxel): `ImageToMeshDistance`, `MeshToImageDistance` (the bounds kept, -1 for
+ * none), `MeasuredImageToMeshDistance`, `MeasuredMeshToImageDistance` (upper
+ * bounds, voxels), `InterfaceCrossings` (boundary segments that cross or touch
+ * another away from a shared vertex) and `TopologyMatches` (components and
+ * Euler characteristic of every material equal the image's).
  *
  * Ears -- cells with two edges on one smooth interface chain -- would have
  * det J = 0 at their corner once curved, so their third edge is split at its
@@ -84,8 +110,11 @@ public:
 
   ///@{
   /**
-   * Continuity of the curved material boundaries: 1 (C1, tangent construction)
-   * or 2 (C2, B-spline interpolation). Default 2.
+   * Continuity of the curved material boundaries: 1 (C1, fitted to the image
+   * when there is one, else the tangent construction) or 2 (C2, B-spline
+   * interpolation). Default 1: only C1 curves can follow the image between
+   * vertices, and on decimated meshes only they are more accurate than the
+   * linear mesh (README, "Curved meshes").
    */
   vtkSetClampMacro(Smoothness, int, 1, 2);
   vtkGetMacro(Smoothness, int);
@@ -95,7 +124,8 @@ public:
   /**
    * C1 only: length of the tangent handles as a fraction of the translated chord
    * of Figure 17a (dimensionless, [0, 1]); 1/3 on evenly spaced vertices gives
-   * the Catmull-Rom spline, 0 straight edges. Default 1/3.
+   * the Catmull-Rom spline, 0 straight edges. With an image, the handles the
+   * fit is pulled towards where the image says little. Default 1/3.
    */
   vtkSetClampMacro(Tension, double, 0.0, 1.0);
   vtkGetMacro(Tension, double);
@@ -119,8 +149,23 @@ public:
   vtkGetMacro(QualityIterations, int);
   ///@}
 
+  ///@{
   /**
-   * The optional label image (port 1) used for the border and accuracy.
+   * The distance bounds the curved interfaces keep against the image on port
+   * 1, h(I, M) and h(M, I) in voxels; pieces that would break one are
+   * shortened (see the class description). Negative (the default): the bounds
+   * recorded in the input's field data (ImageToMeshDistance and
+   * MeshToImageDistance, as vtkLabelOctreeMesher and vtkMeshDecimator write
+   * them); none are enforced when the input records none or there is no image.
+   */
+  vtkSetMacro(ImageToMeshDistance, double);
+  vtkGetMacro(ImageToMeshDistance, double);
+  vtkSetMacro(MeshToImageDistance, double);
+  vtkGetMacro(MeshToImageDistance, double);
+  ///@}
+
+  /**
+   * The optional label image (port 1): the border, the fit, the bounds and accuracy.
    */
   void SetImageConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
 
@@ -132,10 +177,12 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Smoothness = 2;
+  int Smoothness = 1;
   double Tension = 1.0 / 3.0;
   int MaximumUntanglingSteps = 64;
   int QualityIterations = 0;
+  double ImageToMeshDistance = -1.0;
+  double MeshToImageDistance = -1.0;
 
 private:
   vtkBezierCurver(const vtkBezierCurver&) = delete;

@@ -130,18 +130,12 @@ bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& p
 /// A bound the user set (>= 0), or the one the mesher recorded.
 bool ResolveDistance(double set, vtkUnstructuredGrid* input, const char* name, double& value, std::string& error)
 {
-  if (set >= 0.0)
-  {
-    value = set;
-    return true;
-  }
-  vtkDataArray* recorded = input->GetFieldData()->GetArray(name);
-  if (!recorded || recorded->GetNumberOfTuples() < 1)
+  value = labelmesher::ResolveBound(set, input, name);
+  if (value < 0.0)
   {
     error = std::string("Set ") + name + ": the input mesh does not record the bound it was meshed with.";
     return false;
   }
-  value = recorded->GetComponent(0, 0);
   return true;
 }
 

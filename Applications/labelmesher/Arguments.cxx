@@ -85,11 +85,12 @@ std::string Usage()
          "       tetrahedra (3D) or triangles (2D images) with bounded angles, bounded\n"
          "       Hausdorff distance and the image's topology per material, then decimates\n"
          "       the mesh within the same bounds (fewer cells).\n"
-         "curve: meshes a 2D label image as above (decimated only with --decimate:\n"
-         "       curving decimated meshes cannot yet prove every cell valid, issue 13),\n"
-         "       then curves the triangles into cubic Bezier triangles (VTK_BEZIER_TRIANGLE) with C1 or C2 smooth material\n"
-         "       boundaries, every cell proven valid; reports validity, the scaled\n"
-         "       Jacobian histogram and pixel accuracy of the linear vs the curved mesh.\n"
+         "curve: meshes and decimates a 2D label image as above, then curves the\n"
+         "       triangles into cubic Bezier triangles (VTK_BEZIER_TRIANGLE) with C1\n"
+         "       (fitted to the image) or C2 smooth material boundaries that keep both\n"
+         "       distance bounds, every cell proven valid; reports validity, the scaled\n"
+         "       Jacobian histogram, the curves' distances and crossings, and pixel\n"
+         "       accuracy of the linear vs the curved mesh.\n"
          "\n"
          "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel)\n"
          "\n"
@@ -103,9 +104,8 @@ std::string Usage()
          "  --report FILE.json         write the summary as JSON\n"
          "  --min-angle DEG            smallest angle the decimator may create, degrees:\n"
          "                             (0, 30] in 3D, (0, 45] in 2D                [default 15]\n"
-         "  --no-decimate              keep the initial mesh (angles >= 30 3D, 45 2D);\n"
-         "                             the default of 'curve'\n"
-         "  --decimate                 decimate (the default of 'mesh')\n"
+         "  --no-decimate              keep the initial mesh (angles >= 30 3D, 45 2D)\n"
+         "  --decimate                 decimate (the default)\n"
          "  --no-relocate              merges only: do not move interior vertices between\n"
          "                             rounds of merges (more cells; the dissertation's way)\n"
          "  --include-background       keep the cells of label 0\n"
@@ -113,9 +113,11 @@ std::string Usage()
          "                             conformity, topology); saves 1-2x the meshing time\n"
          "  -q, --quiet                no progress bar, no summary (errors only)\n"
          "curve options:\n"
-         "  --smoothness 1|2           continuity of the curved boundaries: C1 or C2  [default 2]\n"
-         "  --tension T                C1 tangent handle length factor in [0, 1]\n"
-         "                             (1/3: Catmull-Rom, 0: straight)             [default 0.3333]\n"
+         "  --smoothness 1|2           continuity of the curved boundaries: C1, fitted\n"
+         "                             to the image, or C2, through the vertices   [default 1]\n"
+         "  --tension T                C1 tangent handle length factor in [0, 1] the fit\n"
+         "                             is pulled towards (1/3: Catmull-Rom, 0: straight)\n"
+         "                                                                         [default 0.3333]\n"
          "  --max-untangling-steps N   most load fractions of the elastic untangling [default 64]\n"
          "  --quality-iterations N     further fraction doublings kept when the worst\n"
          "                             scaled Jacobian improves                    [default 0]\n"
@@ -276,18 +278,14 @@ Arguments ParseArguments(int argc, const char* const* argv)
     throw UsageError("unknown command '" + positional[0] + "': expected 'mesh' or 'curve'");
   }
   args.Command = positional[0];
-  // 'curve' keeps the initial mesh unless asked: the curver cannot yet prove
-  // every cell of a decimated mesh valid (issue 13).
-  args.Decimate = decimateOption.empty() ? args.Command == "mesh" : decimateOption == "--decimate";
+  args.Decimate = decimateOption.empty() || decimateOption == "--decimate";
   if (noRelocateGiven && !args.Decimate)
   {
-    throw UsageError("--no-relocate is a decimator option: it needs decimation ('curve' decimates only with --decimate)");
+    throw UsageError("--no-relocate is a decimator option: it cannot go with --no-decimate");
   }
   if (minAngleGiven && !args.Decimate)
   {
-    throw UsageError(decimateOption.empty()
-        ? "--min-angle is the decimator's bound: 'curve' decimates only with --decimate"
-        : "--min-angle is the decimator's bound: it cannot go with --no-decimate");
+    throw UsageError("--min-angle is the decimator's bound: it cannot go with --no-decimate");
   }
   if (args.Command == "mesh" && !curveOption.empty())
   {

@@ -33,7 +33,7 @@ struct Arguments
   bool Relocate = true;             ///< the decimator moves interior vertices between rounds of merges
   double MinimumAngle = 15.0;       ///< degrees, the decimator's angle bound; (0, 30] in 3D, (0, 45] in 2D
   // curve only
-  int Smoothness = 2;               ///< 1 (C1) or 2 (C2)
+  int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)
   double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless
   int MaximumUntanglingSteps = 64;
   int QualityIterations = 0;

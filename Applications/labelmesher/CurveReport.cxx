@@ -31,7 +31,25 @@ std::string Percent(long long part, long long whole)
                    : "-";
 }
 
+std::optional<double> Bound(vtkFieldData* fd, const char* name)
+{
+  const auto value = FieldValue(fd, name);
+  return value && *value >= 0.0 ? value : std::nullopt;
+}
+
 } // namespace
+
+bool CurveReport::CurvesFaithful() const
+{
+  // The measured figures may exceed the true distances by the measure's resolution.
+  const double resolution = this->CurveResolution.value_or(0.0) + 1e-9;
+  auto within = [resolution](const std::optional<double>& measured, const std::optional<double>& bound) {
+    return !bound || (measured && *measured <= *bound + resolution);
+  };
+  return within(this->MeasuredImageToMesh, this->ImageToMeshBound) &&
+    within(this->MeasuredMeshToImage, this->MeshToImageBound) && this->InterfaceCrossings.value_or(0) == 0 &&
+    this->TopologyMatches.value_or(true);
+}
 
 CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkUnstructuredGrid* curved)
 {
@@ -51,6 +69,21 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
   r.ClosedInterfaceChains = FieldCount(fd, arrays::ClosedInterfaceChains);
   r.CurvedEdges = FieldCount(fd, arrays::CurvedEdges);
   r.SplitEars = FieldCount(fd, arrays::SplitEars);
+  r.ShortenedPieces = FieldCount(fd, arrays::ShortenedPieces);
+  r.StraightenedPieces = FieldCount(fd, arrays::StraightenedPieces);
+  r.PiecesShortenedForBounds = FieldCount(fd, arrays::PiecesShortenedForBounds);
+  r.PiecesShortenedForValidity = FieldCount(fd, arrays::PiecesShortenedForValidity);
+  r.UncertifiedPieces = FieldCount(fd, arrays::UncertifiedPieces);
+  r.UntanglingRounds = FieldCount(fd, arrays::UntanglingRounds);
+  r.ImageToMeshBound = Bound(fd, arrays::ImageToMeshDistance);
+  r.MeshToImageBound = Bound(fd, arrays::MeshToImageDistance);
+  r.CurveResolution = FieldValue(fd, arrays::CurvedMeasureResolution);
+  r.MeasuredImageToMesh = FieldValue(fd, arrays::MeasuredImageToMeshDistance);
+  r.MeasuredMeshToImage = FieldValue(fd, arrays::MeasuredMeshToImageDistance);
+  if (const auto crossings = FieldValue(fd, arrays::InterfaceCrossings))
+    r.InterfaceCrossings = static_cast<long long>(*crossings);
+  if (const auto topology = FieldValue(fd, arrays::TopologyMatches))
+    r.TopologyMatches = *topology != 0.0;
 
   vtkDataArray* scaled = curved->GetCellData()->GetArray(arrays::ScaledJacobian);
   vtkDataArray* minimum = curved->GetCellData()->GetArray(arrays::MinimumJacobian);
@@ -105,6 +138,19 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
       << r.InvalidBeforeUntangling << " invalid before untangling, " << r.InvalidCells
       << " after; " << r.UntanglingSteps << " load steps)\n";
+  out << "Pieces shortened: " << r.ShortenedPieces << " of " << r.CurvedEdges << " (" << r.StraightenedPieces
+      << " straight; " << r.PiecesShortenedForBounds << " for the distance bounds, " << r.PiecesShortenedForValidity
+      << " for validity; " << r.UntanglingRounds << " untangling rounds)\n";
+  if (r.MeasuredImageToMesh && r.MeasuredMeshToImage)
+  {
+    auto bound = [](const std::optional<double>& b) { return b ? FormatFixed(*b, 3) : std::string("none"); };
+    out << "Curves: h(I,M) " << FormatFixed(*r.MeasuredImageToMesh, 4) << " (bound " << bound(r.ImageToMeshBound)
+        << ", linear " << (r.Linear.MeasuredImageToMesh ? FormatFixed(*r.Linear.MeasuredImageToMesh, 4) : "-")
+        << "), h(M,I) " << FormatFixed(*r.MeasuredMeshToImage, 4) << " (bound " << bound(r.MeshToImageBound)
+        << ", linear " << (r.Linear.MeasuredMeshToImage ? FormatFixed(*r.Linear.MeasuredMeshToImage, 4) : "-")
+        << ") voxels; " << r.InterfaceCrossings.value_or(0) << " crossing segments; topology "
+        << (r.TopologyMatches.value_or(false) ? "matches" : "DIFFERS") << "\n";
+  }
   out << "Minimum scaled Jacobian " << FormatFixed(r.MinimumScaledJacobian, 4) << ", histogram:\n";
   for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
   {
@@ -178,6 +224,35 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("closed_interface_chains").Integer(r.ClosedInterfaceChains);
   j.Key("curved_edges").Integer(r.CurvedEdges);
   j.Key("split_ears").Integer(r.SplitEars);
+  j.Key("shortened_pieces").Integer(r.ShortenedPieces);
+  j.Key("straightened_pieces").Integer(r.StraightenedPieces);
+  j.Key("pieces_shortened_for_bounds").Integer(r.PiecesShortenedForBounds);
+  j.Key("pieces_shortened_for_validity").Integer(r.PiecesShortenedForValidity);
+  j.Key("uncertified_pieces").Integer(r.UncertifiedPieces);
+  j.Key("untangling_rounds").Integer(r.UntanglingRounds);
+  auto optional = [&j](const char* key, const std::optional<double>& value) {
+    j.Key(key);
+    if (value)
+      j.Number(*value);
+    else
+      j.Null();
+  };
+  optional("image_to_mesh_bound", r.ImageToMeshBound);
+  optional("mesh_to_image_bound", r.MeshToImageBound);
+  optional("measure_resolution", r.CurveResolution);
+  optional("measured_image_to_mesh", r.MeasuredImageToMesh);
+  optional("measured_mesh_to_image", r.MeasuredMeshToImage);
+  j.Key("interface_crossings");
+  if (r.InterfaceCrossings)
+    j.Integer(*r.InterfaceCrossings);
+  else
+    j.Null();
+  j.Key("topology_matches");
+  if (r.TopologyMatches)
+    j.Bool(*r.TopologyMatches);
+  else
+    j.Null();
+  j.Key("within_bounds").Bool(r.CurvesFaithful());
   j.EndObject();
   j.Key("validity").BeginObject();
   j.Key("valid").Bool(r.Valid());

@@ -43,6 +43,15 @@ struct CurveReport
   /// Scaled Jacobian histogram: bin 0 is <= 0 (not proven valid), bins 1..10
   /// are (0, 0.1], (0.1, 0.2], ..., (0.9, 1].
   std::array<long long, 11> ScaledJacobianHistogram{};
+  long long ShortenedPieces = 0, StraightenedPieces = 0, PiecesShortenedForBounds = 0,
+            PiecesShortenedForValidity = 0, UncertifiedPieces = 0, UntanglingRounds = 0;
+  /// Measured on the curves (upper bounds, voxels), with the image only.
+  std::optional<double> ImageToMeshBound, MeshToImageBound; ///< kept by the curver; none when < 0
+  std::optional<double> CurveResolution, MeasuredImageToMesh, MeasuredMeshToImage;
+  std::optional<long long> InterfaceCrossings;
+  std::optional<bool> TopologyMatches;
+  /// The curves keep the bounds they were given, do not cross and keep the topology.
+  bool CurvesFaithful() const;
   bool HasAccuracy = false;
   long long Pixels = 0, MisclassifiedLinear = 0, MisclassifiedCurved = 0;
   std::map<int, std::pair<PixelCounts, PixelCounts>> AccuracyPerMaterial; ///< linear, curved

@@ -223,6 +223,11 @@ int Run(const Arguments& args)
   {
     throw RunError(failure);
   }
+  if (!report.CurvesFaithful())
+  {
+    throw RunError("the curved mesh breaks a distance bound, crosses an interface or changes the topology "
+                   "(see the report); it is written for inspection");
+  }
   return 0;
 }
 

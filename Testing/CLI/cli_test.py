@@ -343,7 +343,7 @@ def case_min_angle():
 
 def case_no_relocate():
     """--no-relocate keeps the merges alone: no vertex relocated, at least as
-    many cells, the same bounds; it needs decimation."""
+    many cells, the same bounds; it cannot go with --no-decimate."""
     image = write_nrrd("ball.nrrd", ball(20, 8.5).astype(np.uint8), "uchar")
     cells, reports = {}, {}
     for name, extra in (("relocated", []), ("merges", ["--no-relocate"])):
@@ -356,7 +356,8 @@ def case_no_relocate():
     assert reports["merges"]["decimation"]["vertices_relocated"] == 0, reports["merges"]["decimation"]
     assert reports["relocated"]["decimation"]["vertices_relocated"] > 0, reports["relocated"]["decimation"]
     assert cells["relocated"] < cells["merges"], cells
-    expect_failure(run("mesh", image, "-o", path("x.vtu"), "--no-relocate", "--no-decimate"), "needs decimation", 2)
+    expect_failure(run("mesh", image, "-o", path("x.vtu"), "--no-relocate", "--no-decimate"),
+                   "cannot go with --no-decimate", 2)
     print("OK: no relocate", cells)
 
 
@@ -371,12 +372,16 @@ def two_blobs_png(name):
 
 
 def case_curve_good_png():
+    """curve decimates by default and curves C1 (fitted) or C2: every cell
+    proven valid, both bounds kept on the curves, no crossings, the topology;
+    the default C1 curves misclassify fewer pixels than the linear mesh."""
     for smoothness in ("1", "2"):
         mesh, report_file = path(f"curved{smoothness}.vtu"), path(f"curve{smoothness}.json")
         result = run("curve", two_blobs_png("blobs.png"), "-o", mesh, "--report", report_file,
                      "--smoothness", smoothness)
         assert result.returncode == 0, result.stderr
         assert "proven valid" in result.stdout, result.stdout
+        assert "Pieces shortened" in result.stdout and "Curves: h(I,M)" in result.stdout, result.stdout
         grid = read_mesh(mesh)
         types = vtk_to_numpy(grid.GetCellTypesArray())
         assert np.all(types == VTK_BEZIER_TRIANGLE), set(types)
@@ -389,13 +394,23 @@ def case_curve_good_png():
         with open(report_file) as f:
             report = json.load(f)
         assert report["command"] == "curve"
-        assert report["decimation"] is None, "curve keeps the initial mesh unless --decimate"
+        decimation = report["decimation"]
+        assert decimation is not None, "curve decimates by default"
+        assert decimation["cells_after"] == report["linear_mesh"]["cells"] < decimation["cells_before"]
         assert report["parameters"]["smoothness"] == int(smoothness)
         assert report["validity"]["valid"] is True and report["validity"]["invalid_cells"] == 0
-        assert report["curved_mesh"]["cells"] == grid.GetNumberOfCells()
-        assert report["curved_mesh"]["control_points"] == grid.GetNumberOfPoints()
+        curved = report["curved_mesh"]
+        assert curved["cells"] == grid.GetNumberOfCells()
+        assert curved["control_points"] == grid.GetNumberOfPoints()
+        assert curved["image_to_mesh_bound"] == 2.0 and curved["mesh_to_image_bound"] == 2.0
+        slack = curved["measure_resolution"] + 1e-9
+        assert 0 < curved["measured_image_to_mesh"] <= 2.0 + slack, curved
+        assert 0 < curved["measured_mesh_to_image"] <= 2.0 + slack, curved
+        assert curved["interface_crossings"] == 0 and curved["topology_matches"] is True, curved
+        assert curved["within_bounds"] is True and curved["uncertified_pieces"] == 0, curved
+        assert 0 <= curved["straightened_pieces"] <= curved["shortened_pieces"] <= curved["curved_edges"]
         # Ears (cells with two edges on one smooth chain) are split before curving.
-        split = report["curved_mesh"]["split_ears"]
+        split = curved["split_ears"]
         assert report["linear_mesh"]["cells"] + split <= grid.GetNumberOfCells()
         assert grid.GetNumberOfCells() <= report["linear_mesh"]["cells"] + 2 * split
         histogram = report["validity"]["scaled_jacobian_histogram"]
@@ -406,18 +421,25 @@ def case_curve_good_png():
         assert {m["material"] for m in accuracy["materials"]} == {2, 5}
         for kind in ("linear", "curved"):
             assert 0 < accuracy["misclassified_" + kind] < 0.05 * 48 * 40, accuracy
+        if smoothness == "1":
+            assert accuracy["misclassified_curved"] < accuracy["misclassified_linear"], accuracy
         print("OK: C" + smoothness, grid.GetNumberOfCells(), "cells, misclassified",
               accuracy["misclassified_linear"], "->", accuracy["misclassified_curved"])
+    result = run("curve", two_blobs_png("blobs.png"), "-o", path("initial.vtu"),
+                 "--report", path("initial.json"), "--no-decimate")
+    assert result.returncode == 0, result.stderr
+    with open(path("initial.json")) as f:
+        report = json.load(f)
+    assert report["decimation"] is None, "--no-decimate keeps the initial mesh"
+    assert report["validity"]["valid"] is True and report["curved_mesh"]["within_bounds"] is True
     result = run("curve", two_blobs_png("blobs.png"), "-o", path("decimated.vtu"),
-                 "--report", path("decimated.json"), "--decimate", "--min-angle", "20")
+                 "--report", path("decimated.json"), "--min-angle", "20")
     assert result.returncode == 0, result.stderr
     with open(path("decimated.json")) as f:
         report = json.load(f)
-    decimation = report["decimation"]
-    assert decimation["minimum_angle_bound_degrees"] == 20.0
-    assert decimation["cells_after"] == report["linear_mesh"]["cells"] < decimation["cells_before"]
+    assert report["decimation"]["minimum_angle_bound_degrees"] == 20.0
     assert report["validity"]["valid"] is True, report["validity"]
-    print("OK: decimated then curved,", decimation["cells_before"], "->", decimation["cells_after"])
+    print("OK: --no-decimate and --min-angle")
 
 
 def case_curve_rejects_3d():
@@ -432,7 +454,6 @@ def case_curve_bad_options():
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "50"), "(0, 45] (2D)", 2)
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "20", "--no-decimate"),
                    "--no-decimate", 2)
-    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-angle", "20"), "only with --decimate", 2)
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--decimate", "--no-decimate"), "contradict", 2)
     expect_failure(run("mesh", png, "-o", path("out.vtu"), "--smoothness", "2"), "'curve' only", 2)
 

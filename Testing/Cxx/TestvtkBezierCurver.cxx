@@ -9,6 +9,7 @@
 
 #include "LabelMesherArrayNames.h"
 #include "vtkBezierCurver.h"
+#include "vtkMeshDecimator.h"
 #include "vtkLabelOctreeMesher.h"
 
 #include "vtkCellData.h"
@@ -86,9 +87,55 @@ TEST(vtkBezierCurver, CurvesTheMesherOutputIntoValidCubicTrianglesWithItsArrays)
   EXPECT_EQ(FieldScalar(curved, arrays::Pixels), 32.0 * 32.0);
   EXPECT_GE(FieldScalar(curved, arrays::MisclassifiedPixelsLinear), 0.0);
   EXPECT_GE(FieldScalar(curved, arrays::MisclassifiedPixelsCurved), 0.0);
+  // The bounds the mesher recorded, kept on the curves (in voxels, although
+  // the mesh is in physical units: the map from pixels is taken into account).
+  const double resolution = FieldScalar(curved, arrays::CurvedMeasureResolution);
+  EXPECT_GT(resolution, 0.0);
+  EXPECT_LT(resolution, 0.01);
+  EXPECT_EQ(FieldScalar(curved, arrays::ImageToMeshDistance), mesher->GetImageToMeshDistance());
+  EXPECT_EQ(FieldScalar(curved, arrays::MeshToImageDistance), mesher->GetMeshToImageDistance());
+  EXPECT_LE(FieldScalar(curved, arrays::MeasuredImageToMeshDistance), mesher->GetImageToMeshDistance() + resolution);
+  EXPECT_LE(FieldScalar(curved, arrays::MeasuredMeshToImageDistance), mesher->GetMeshToImageDistance() + resolution);
+  EXPECT_GT(FieldScalar(curved, arrays::MeasuredMeshToImageDistance), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::InterfaceCrossings), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::TopologyMatches), 1.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::UncertifiedPieces), 0.0);
+  EXPECT_GE(FieldScalar(curved, arrays::UntanglingRounds), 1.0);
+  EXPECT_LE(FieldScalar(curved, arrays::StraightenedPieces), FieldScalar(curved, arrays::ShortenedPieces));
   auto* names = vtkStringArray::SafeDownCast(curved->GetFieldData()->GetAbstractArray(arrays::StageName));
   ASSERT_NE(names, nullptr);
-  EXPECT_EQ(names->GetValue(names->GetNumberOfValues() - 1), "pixel accuracy");
+  EXPECT_EQ(names->GetValue(names->GetNumberOfValues() - 1), "curved distances");
+}
+
+TEST(vtkBezierCurver, DecimatedAndCurvedIsMoreAccurateThanLinearWithinTheBounds)
+{
+  // 60 x 60 (not a cube number, which MakeVtkImage would read as 3D).
+  auto image = MakeVtkImage(MakeDiscSliceXZ(60, 22.3), { 0.5, 0.5, 0.5 }, { 1, 2, 3 });
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->SetIncludeBackground(true);
+  vtkNew<vtkMeshDecimator> decimator;
+  decimator->SetInputConnection(0, mesher->GetOutputPort(0));
+  decimator->SetInputDataObject(1, image);
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(0, decimator->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+  curver->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << (errors.Messages.empty() ? "" : errors.Messages[0]);
+  vtkUnstructuredGrid* curved = curver->GetOutput();
+  ASSERT_GT(curved->GetNumberOfCells(), 0);
+  EXPECT_EQ(FieldScalar(curved, arrays::Smoothness), 1.0); // the default: fitted C1
+  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+  const double resolution = FieldScalar(curved, arrays::CurvedMeasureResolution);
+  EXPECT_LE(FieldScalar(curved, arrays::MeasuredImageToMeshDistance), 2.0 + resolution);
+  EXPECT_LE(FieldScalar(curved, arrays::MeasuredMeshToImageDistance), 2.0 + resolution);
+  EXPECT_EQ(FieldScalar(curved, arrays::InterfaceCrossings), 0.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::TopologyMatches), 1.0);
+  const double linear = FieldScalar(curved, arrays::MisclassifiedPixelsLinear);
+  const double curvedPixels = FieldScalar(curved, arrays::MisclassifiedPixelsCurved);
+  EXPECT_GT(linear, 0.0);
+  EXPECT_LT(curvedPixels, 0.67 * linear) << "linear " << linear << ", curved " << curvedPixels;
 }
 
 TEST(vtkBezierCurver, BadInputIsOneErrorAndAnEmptyOutput)

@@ -68,6 +68,7 @@ inline constexpr char FrozenVertices[] = "FrozenVertices";
 inline constexpr char Smoothness[] = "Smoothness";
 inline constexpr char Tension[] = "Tension";
 inline constexpr char MaximumUntanglingSteps[] = "MaximumUntanglingSteps";
+inline constexpr char MaximumShorteningRounds[] = "MaximumShorteningRounds";
 inline constexpr char QualityIterations[] = "QualityIterations";
 inline constexpr char InvalidBeforeUntangling[] = "InvalidBeforeUntangling";
 inline constexpr char InvalidCells[] = "InvalidCells";

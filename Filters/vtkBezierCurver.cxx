@@ -363,6 +363,7 @@ int vtkBezierCurver::RequestData(
     this->Smoothness == 1 ? labelmesher::Smoothness::C1 : labelmesher::Smoothness::C2;
   parameters.Smoothing.Tension = this->Tension;
   parameters.Untangling.MaximumSteps = this->MaximumUntanglingSteps;
+  parameters.MaximumShorteningRounds = this->MaximumShorteningRounds;
   parameters.Untangling.QualityIterations = this->QualityIterations;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
@@ -402,6 +403,7 @@ int vtkBezierCurver::RequestData(
   AddScalarField(fd, arrays::Smoothness, this->Smoothness);
   AddScalarField(fd, arrays::Tension, this->Tension);
   AddScalarField(fd, arrays::MaximumUntanglingSteps, this->MaximumUntanglingSteps);
+  AddScalarField(fd, arrays::MaximumShorteningRounds, this->MaximumShorteningRounds);
   AddScalarField(fd, arrays::QualityIterations, this->QualityIterations);
   AddCurvingCounts(fd, result);
 
@@ -428,7 +430,8 @@ int vtkBezierCurver::RequestData(
     vtkErrorMacro(<< result.InvalidCells.size() << " of " << result.Mesh.Cells.size()
                   << " cells could not be proven valid after untangling with up to "
                   << this->MaximumUntanglingSteps
-                  << " steps; they are marked Valid = 0 in the output.");
+                  << " steps in " << result.UntanglingRounds
+                  << " rounds of shortening; they are marked Valid = 0 in the output.");
   }
   return 1;
 }
@@ -440,6 +443,7 @@ void vtkBezierCurver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Smoothness: C" << this->Smoothness << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
+  os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
   os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
   os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";

@@ -58,7 +58,7 @@
  * - `ScaledJacobian` (double): MinimumJacobian / proven upper bound of det J, a
  *   conservative min|J| / max|J| (1 for straight cells, <= 0 for invalid ones);
  * - `Valid` (unsigned char): 1 where det J > 0 is proven.
- * Field data: `Smoothness`, `Tension`, `MaximumUntanglingSteps`,
+ * Field data: `Smoothness`, `Tension`, `MaximumUntanglingSteps`, `MaximumShorteningRounds`,
  * `QualityIterations`; `InvalidBeforeUntangling` (cells made invalid by curving
  * the boundary alone), `InvalidCells`, `UntanglingSteps`, `InterfaceChains`,
  * `ClosedInterfaceChains`, `CurvedEdges`, `SplitEars` (edges split before curving,
@@ -87,7 +87,8 @@
  * midpoint first (with the cell across it): the output may have a few more cells
  * than the input, over the same region.
  *
- * If some cell cannot be made valid within MaximumUntanglingSteps, the filter
+ * If some cell cannot be made valid within MaximumUntanglingSteps and
+ * MaximumShorteningRounds, the filter
  * reports an error naming the count, and still outputs the mesh with those cells
  * marked (`Valid` = 0) for inspection: an invalid mesh is never passed on
  * silently. Progress is reported by stage; AbortExecute stops the run (empty output).
@@ -142,6 +143,16 @@ public:
 
   ///@{
   /**
+   * Most untangling rounds: after each that leaves cells invalid, the curves
+   * of those cells are shortened (see the class description) and untangling
+   * runs again. Default 8 (three shortenings make a curve straight).
+   */
+  vtkSetClampMacro(MaximumShorteningRounds, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumShorteningRounds, int);
+  ///@}
+
+  ///@{
+  /**
    * Further doublings of the fractions after the mesh is valid, each kept when
    * the worst scaled Jacobian improves. Default 0.
    */
@@ -180,6 +191,7 @@ protected:
   int Smoothness = 1;
   double Tension = 1.0 / 3.0;
   int MaximumUntanglingSteps = 64;
+  int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
   double ImageToMeshDistance = -1.0;
   double MeshToImageDistance = -1.0;

@@ -119,6 +119,8 @@ std::string Usage()
          "                             is pulled towards (1/3: Catmull-Rom, 0: straight)\n"
          "                                                                         [default 0.3333]\n"
          "  --max-untangling-steps N   most load fractions of the elastic untangling [default 64]\n"
+         "  --max-shortening-rounds N  most untangling rounds, each after shortening the\n"
+         "                             curves of the cells left invalid            [default 8]\n"
          "  --quality-iterations N     further fraction doublings kept when the worst\n"
          "                             scaled Jacobian improves                    [default 0]\n"
          "  -h, --help                 this text\n"
@@ -220,6 +222,11 @@ Arguments ParseArguments(int argc, const char* const* argv)
     {
       curveOption = curveOption.empty() ? word : curveOption;
       args.MaximumUntanglingSteps = ParseCount(word, takeValue(), 1);
+    }
+    else if (word == "--max-shortening-rounds")
+    {
+      curveOption = curveOption.empty() ? word : curveOption;
+      args.MaximumShorteningRounds = ParseCount(word, takeValue(), 1);
     }
     else if (word == "--quality-iterations")
     {

@@ -36,6 +36,7 @@ struct Arguments
   int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)
   double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless
   int MaximumUntanglingSteps = 64;
+  int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
   bool Quiet = false;
   bool Help = false;

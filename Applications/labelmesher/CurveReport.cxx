@@ -58,6 +58,7 @@ CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkU
   r.Smoothness = args.Smoothness;
   r.Tension = args.Tension;
   r.MaximumUntanglingSteps = args.MaximumUntanglingSteps;
+  r.MaximumShorteningRounds = args.MaximumShorteningRounds;
   r.QualityIterations = args.QualityIterations;
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
@@ -191,6 +192,7 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("smoothness").Integer(r.Smoothness);
   j.Key("tension").Number(r.Tension);
   j.Key("maximum_untangling_steps").Integer(r.MaximumUntanglingSteps);
+  j.Key("maximum_shortening_rounds").Integer(r.MaximumShorteningRounds);
   j.Key("quality_iterations").Integer(r.QualityIterations);
   j.Key("image_to_mesh").Number(r.Linear.ImageToMeshBound);
   j.Key("mesh_to_image").Number(r.Linear.MeshToImageBound);

@@ -35,7 +35,7 @@ struct CurveReport
   RunReport Linear; ///< the mesher's run (its Output is the curved file)
   int Smoothness = 2;
   double Tension = 0.0;
-  int MaximumUntanglingSteps = 0, QualityIterations = 0;
+  int MaximumUntanglingSteps = 0, MaximumShorteningRounds = 0, QualityIterations = 0;
   long long Cells = 0, ControlPoints = 0;
   long long InvalidBeforeUntangling = 0, InvalidCells = 0, UntanglingSteps = 0;
   long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0;

@@ -189,6 +189,7 @@ int Run(const Arguments& args)
   curver->SetSmoothness(args.Smoothness);
   curver->SetTension(args.Tension);
   curver->SetMaximumUntanglingSteps(args.MaximumUntanglingSteps);
+  curver->SetMaximumShorteningRounds(args.MaximumShorteningRounds);
   curver->SetQualityIterations(args.QualityIterations);
   curver->SetInputData(mesh);
   curver->SetInputDataObject(1, image);

@@ -68,6 +68,32 @@ TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
 
 INSTANTIATE_TEST_SUITE_P(Shards, CurverProperties, ::testing::Range(0, 4));
 
+/// Seeds that once failed a scan (labelmesher_property_scan --curve), with the
+/// cause fixed: curves leaving a vertex within 0.01 voxel of each other's
+/// direction crossed below the polylines' resolution (smooth 104341, 112312;
+/// boxes 100386, 101577: now the cone test of CurveCrossings.h), and a 5-degree
+/// sliver stayed invalid with every curve at its corners straight (smooth
+/// 100033: now the curves one ring further out are shortened).
+TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
+{
+  struct Case
+  {
+    bool Boxes;
+    std::uint64_t Seed;
+  };
+  for (const Case& c : { Case{ false, 100033 }, Case{ false, 104341 }, Case{ false, 112312 }, Case{ true, 100386 },
+         Case{ true, 101577 } })
+  {
+    const testing::RandomLabelImage random = c.Boxes ? testing::GenerateRandomBoxImage(c.Seed, 2, 24)
+                                                     : testing::GenerateRandomLabelImageWithDescription(c.Seed, 2);
+    const MesherParameters mesher = testing::DrawDistanceBounds(c.Seed);
+    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
+      testing::DrawDecimationParameters(c.Seed, 2, mesher), testing::DrawSmoothness(c.Seed));
+    EXPECT_TRUE(violated.empty()) << (c.Boxes ? "boxes" : "smooth") << " seed " << c.Seed << "\n"
+                                  << Violations(violated) << random.Describe();
+  }
+}
+
 /// Smooth shapes, C1 with the default bounds of 2 voxels: all guarantees, and
 /// fewer misclassified pixels than the linear mesh, shape by shape and in sum.
 TEST(CurverAccuracy, CurvedBeatsLinearOnSmoothShapes)

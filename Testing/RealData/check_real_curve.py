@@ -9,8 +9,12 @@ assert what the curver promises, from its JSON report and from the written mesh:
   C++ proof), has one sign at every sample;
 - cubic Bézier triangles only, Material labels those of the linear mesh;
 - the scaled-Jacobian histogram accounts for every cell;
-- pixel accuracy of the linear and the curved mesh reported;
-- with --check-failure: a run allowed one load step, which cannot untangle
+- decimated by default; both distance bounds kept on the curves (the report's
+  measured figures, which may exceed the true distances by its resolution),
+  no crossing interfaces, the image's topology;
+- pixel accuracy of the linear and the curved mesh reported, and the default
+  C1 curves misclassify at least a fifth fewer pixels than the linear mesh;
+- with --check-failure: a run allowed one load step and one round, which cannot untangle
   every cell, exits 1 with one line on stderr and writes the mesh with exactly
   the cells it could not prove valid marked Valid = 0.
 
@@ -77,6 +81,21 @@ def check(labelmesher, image, workdir, smoothness):
         failures.append("histogram does not account for every cell")
     if report["accuracy"] is None:
         failures.append("no pixel accuracy in the report")
+        return failures
+    if report["decimation"] is None:
+        failures.append("curve did not decimate by default")
+    curved = report["curved_mesh"]
+    slack = curved["measure_resolution"] + 1e-9
+    for side, bound in (("image_to_mesh", 2.0), ("mesh_to_image", 2.0)):
+        if curved[side + "_bound"] != bound or not (0 < curved["measured_" + side] <= bound + slack):
+            failures.append("curves: %s %s (bound %s)" % (side, curved["measured_" + side], curved[side + "_bound"]))
+    if curved["interface_crossings"] != 0 or curved["topology_matches"] is not True or not curved["within_bounds"]:
+        failures.append("curves: %d crossings, topology matches %s" % (curved["interface_crossings"],
+                                                                     curved["topology_matches"]))
+    accuracy = report["accuracy"]
+    if smoothness == "1" and not 5 * accuracy["misclassified_curved"] <= 4 * accuracy["misclassified_linear"]:
+        failures.append("C1 curves not a fifth more accurate than linear: %d -> %d" %
+                        (accuracy["misclassified_linear"], accuracy["misclassified_curved"]))
 
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(mesh)
@@ -95,20 +114,24 @@ def check(labelmesher, image, workdir, smoothness):
     lowest, highest = jacobians.min(), jacobians.max()
     if not (lowest > 0 or highest < 0):
         failures.append("sampled det J changes sign: [%g, %g]" % (lowest, highest))
-    print("C%s: %d cells, sampled det J in [%g, %g], misclassified pixels %d -> %d"
-          % (smoothness, cells, lowest, highest, report["accuracy"]["misclassified_linear"],
-             report["accuracy"]["misclassified_curved"]))
+    print("C%s: %d cells, sampled det J in [%g, %g], misclassified pixels %d -> %d, curves h(I,M) %.4f "
+          "h(M,I) %.4f (linear %.4f %.4f), %d of %d pieces shortened"
+          % (smoothness, cells, lowest, highest, accuracy["misclassified_linear"], accuracy["misclassified_curved"],
+             curved["measured_image_to_mesh"], curved["measured_mesh_to_image"],
+             report["linear_mesh"]["measured_image_to_mesh"], report["linear_mesh"]["measured_mesh_to_image"],
+             curved["shortened_pieces"], curved["curved_edges"]))
     return failures
 
 
 def check_loud_failure(labelmesher, image, workdir):
-    """With a single load step some cells stay invalid: the run must fail with
+    """With a single load step and no shortening some cells stay invalid: the run must fail with
     one line on stderr, yet write the mesh with exactly those cells marked."""
     name = os.path.splitext(os.path.basename(image))[0] + "_one_step"
     mesh = os.path.join(workdir, name + ".vtu")
     report_path = os.path.join(workdir, name + ".json")
     run = subprocess.run([labelmesher, "curve", image, "-o", mesh, "--report", report_path,
-                          "--max-untangling-steps", "1", "--quiet"], capture_output=True, text=True)
+                          "--max-untangling-steps", "1", "--max-shortening-rounds", "1", "--quiet"],
+                         capture_output=True, text=True)
     failures = []
     if run.returncode != 1:
         return ["one-step run: exit status %d, expected 1 (if one step now suffices, pick a "

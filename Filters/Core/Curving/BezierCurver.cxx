@@ -111,12 +111,14 @@ std::vector<std::pair<std::int64_t, Point2>> Targets(const SimplexMesh& linear, 
   return prescribed;
 }
 
-/// Shortens the curved pieces on the edges of `cells`, or where a cell has no
-/// curved edge, those ending at its corners (a cell squeezed by a neighbour's
-/// curve); false when none was left to shorten.
+/// Shortens the curved pieces on the edges of `cells`; for a cell without a
+/// curved edge, those ending at its corners, or failing that at the corners
+/// of the cells around them, ring by ring (a sliver is squeezed by the
+/// elastic displacement of curves nearby). False when none was left.
 bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size_t>& cells,
   std::vector<CurvePiece>& pieces, std::set<std::size_t>& shortened)
 {
+  constexpr int kRings = 4;
   std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> pieceOf;
   std::multimap<std::int64_t, std::size_t> piecesAt;
   for (std::size_t p = 0; p < pieces.size(); ++p)
@@ -125,6 +127,11 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
     piecesAt.emplace(pieces[p].From, p);
     piecesAt.emplace(pieces[p].To, p);
   }
+  std::multimap<std::int64_t, std::size_t> cellsAt;
+  for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
+    for (int k = 0; k < 3; ++k)
+      cellsAt.emplace(linear.Cell(c)[k], c);
+
   std::set<std::size_t> chosen;
   for (std::size_t c : cells)
   {
@@ -136,11 +143,19 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
       if (it != pieceOf.end() && pieces[it->second].Scale > 0.0)
         own.insert(it->second);
     }
-    if (own.empty())
-      for (int k = 0; k < 3; ++k)
-        for (auto [it, end] = piecesAt.equal_range(v[k]); it != end; ++it)
+    std::set<std::int64_t> ring(v, v + 3);
+    for (int r = 0; own.empty() && r < kRings; ++r)
+    {
+      for (std::int64_t vertex : ring)
+        for (auto [it, end] = piecesAt.equal_range(vertex); it != end; ++it)
           if (pieces[it->second].Scale > 0.0)
             own.insert(it->second);
+      std::set<std::int64_t> wider = ring;
+      for (std::int64_t vertex : ring)
+        for (auto [it, end] = cellsAt.equal_range(vertex); it != end; ++it)
+          wider.insert(linear.Cell(it->second), linear.Cell(it->second) + 3);
+      ring = std::move(wider);
+    }
     chosen.insert(own.begin(), own.end());
   }
   for (std::size_t p : chosen)

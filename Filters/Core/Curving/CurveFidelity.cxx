@@ -3,6 +3,7 @@
 #include "Curving/CurveFidelity.h"
 
 #include "Criteria/DistanceBound.h"
+#include "Curving/CurveCrossings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,8 +26,6 @@ struct BoundarySegment
   std::int32_t First;  ///< materials on its two sides (0: background or outside)
   std::int32_t Second;
   std::int64_t Piece = -1;
-  std::int64_t IdA = -1; ///< point ids of A and B (mesh vertices, then polyline points): segments meet there
-  std::int64_t IdB = -1;
   bool Bounds(std::int32_t m) const { return m != 0 && (First == m || Second == m); }
 };
 
@@ -149,12 +148,11 @@ public:
   {
     std::vector<BoundarySegment> segments;
     std::set<std::size_t> failing;
-    std::int64_t nextId = static_cast<std::int64_t>(Linear.Points.size());
     for (const MeshBoundaryEdge& e : Edges)
     {
       if (e.Piece < 0 || Pieces[static_cast<std::size_t>(e.Piece)].Scale <= 0.0)
       {
-        segments.push_back({ IndexPoint(e.A), IndexPoint(e.B), e.First, e.Second, -1, e.A, e.B });
+        segments.push_back({ IndexPoint(e.A), IndexPoint(e.B), e.First, e.Second, -1 });
         continue;
       }
       const CurvePiece& piece = Pieces[static_cast<std::size_t>(e.Piece)];
@@ -164,18 +162,12 @@ public:
       const std::vector<Point2> polyline = FlattenCubic(p, Bounds.Tolerance);
       const std::size_t first = segments.size();
       for (std::size_t k = 0; k + 1 < polyline.size(); ++k)
-      {
-        const std::int64_t a = k == 0 ? piece.From : nextId + static_cast<std::int64_t>(k) - 1;
-        const std::int64_t b = k + 2 == polyline.size() ? piece.To : nextId + static_cast<std::int64_t>(k);
-        segments.push_back({ polyline[k], polyline[k + 1], e.First, e.Second, e.Piece, a, b });
-      }
-      nextId += static_cast<std::int64_t>(polyline.size()) - 2;
+        segments.push_back({ polyline[k], polyline[k + 1], e.First, e.Second, e.Piece });
       if (!MeshToImageHolds(segments, first, segments.size()))
         failing.insert(static_cast<std::size_t>(e.Piece));
     }
     ImageToMeshFailures(segments, failing);
-    CrossingFailures(segments, failing);
-    TangentOrderFailures(failing);
+    CrossingFailures(failing);
     return failing;
   }
 
@@ -255,127 +247,42 @@ private:
     }
   }
 
-  /// Curved pieces whose polylines cross or touch another boundary segment
-  /// away from a shared point. Kept apart from Checks/CurvedBoundary.h's count,
-  /// which re-measures the output.
-  static void CrossingFailures(const std::vector<BoundarySegment>& segments, std::set<std::size_t>& failing)
+  /// Curved pieces that may meet another boundary curve away from a shared
+  /// vertex (CurveCrossings.h). Kept apart from Checks/CurvedBoundary.h's
+  /// count, which re-measures the output on polylines.
+  void CrossingFailures(std::set<std::size_t>& failing) const
   {
-    constexpr double kBin = 4.0;
-    std::unordered_map<long long, std::vector<std::size_t>> bins;
-    for (std::size_t s = 0; s < segments.size(); ++s)
-    {
-      const auto& g = segments[s];
-      const long x0 = static_cast<long>(std::floor(std::min(g.A[0], g.B[0]) / kBin));
-      const long x1 = static_cast<long>(std::floor(std::max(g.A[0], g.B[0]) / kBin));
-      const long y0 = static_cast<long>(std::floor(std::min(g.A[1], g.B[1]) / kBin));
-      const long y1 = static_cast<long>(std::floor(std::max(g.A[1], g.B[1]) / kBin));
-      for (long y = y0; y <= y1; ++y)
-        for (long x = x0; x <= x1; ++x)
-          bins[(static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL)].push_back(s);
-    }
-    for (const auto& [key, members] : bins)
-      for (std::size_t i = 0; i < members.size(); ++i)
-        for (std::size_t j = i + 1; j < members.size(); ++j)
-        {
-          const BoundarySegment& s = segments[members[i]];
-          const BoundarySegment& t = segments[members[j]];
-          if ((s.Piece < 0 && t.Piece < 0) || !Meet(s, t))
-            continue;
-          for (const BoundarySegment* g : { &s, &t })
-            if (g->Piece >= 0)
-              failing.insert(static_cast<std::size_t>(g->Piece));
-        }
-  }
-
-  /// Around every vertex, the boundary curves must leave in the order their
-  /// chords do: curves whose tangents swap order cross arbitrarily close to
-  /// the vertex, below any polyline's resolution. Checked in index space on the
-  /// end handles (the chord for a straight piece): the counter-clockwise turns
-  /// from each handle to the next, in the chords' order, must be positive and
-  /// add up to one full turn.
-  void TangentOrderFailures(std::set<std::size_t>& failing) const
-  {
-    constexpr double kTwoPi = 6.283185307179586;
-    std::map<std::int64_t, std::vector<std::array<double, 3>>> around; // vertex: chord angle, handle angle, piece
+    std::vector<BoundaryCurve> curves;
+    std::vector<std::int64_t> pieceOf;
     for (const MeshBoundaryEdge& e : Edges)
     {
-      std::array<Point2, 4> p;
-      if (e.Piece >= 0)
+      BoundaryCurve curve;
+      std::int64_t piece = -1;
+      if (e.Piece >= 0 && Pieces[static_cast<std::size_t>(e.Piece)].Scale > 0.0)
       {
-        const CurvePiece& piece = Pieces[static_cast<std::size_t>(e.Piece)];
-        p = piece.ControlPoints(Linear);
-        if (piece.From != e.A)
-          std::swap(p[0], p[3]), std::swap(p[1], p[2]);
+        piece = e.Piece;
+        const CurvePiece& p = Pieces[static_cast<std::size_t>(piece)];
+        curve.ControlPoints = p.ControlPoints(Linear);
+        curve.From = p.From;
+        curve.To = p.To;
       }
       else
       {
-        p = { Point2{ Linear.Points[e.A][0], Linear.Points[e.A][1] }, Point2{}, Point2{},
-          Point2{ Linear.Points[e.B][0], Linear.Points[e.B][1] } };
-        p[1] = p[3];
-        p[2] = p[0];
+        const Point2 a{ Linear.Points[e.A][0], Linear.Points[e.A][1] };
+        const Point2 b{ Linear.Points[e.B][0], Linear.Points[e.B][1] };
+        curve.ControlPoints = { a, Point2{ (2 * a[0] + b[0]) / 3, (2 * a[1] + b[1]) / 3 },
+          Point2{ (a[0] + 2 * b[0]) / 3, (a[1] + 2 * b[1]) / 3 }, b };
+        curve.From = e.A;
+        curve.To = e.B;
       }
-      for (Point2& q : p)
+      for (Point2& q : curve.ControlPoints)
         q = Image.ToIndex(q);
-      auto angle = [](const Point2& from, const Point2& to) { return std::atan2(to[1] - from[1], to[0] - from[0]); };
-      const double piece = static_cast<double>(e.Piece);
-      around[e.A].push_back({ angle(p[0], p[3]), angle(p[0], p[1]), piece });
-      around[e.B].push_back({ angle(p[3], p[0]), angle(p[3], p[2]), piece });
+      curves.push_back(curve);
+      pieceOf.push_back(piece);
     }
-    for (auto& [vertex, edges] : around)
-    {
-      if (edges.size() < 3)
-        continue;
-      std::sort(edges.begin(), edges.end());
-      double turn = 0.0;
-      bool ordered = true;
-      for (std::size_t k = 0; k < edges.size(); ++k)
-      {
-        double d = edges[(k + 1) % edges.size()][1] - edges[k][1];
-        while (d <= 0.0)
-          d += kTwoPi;
-        while (d > kTwoPi)
-          d -= kTwoPi;
-        ordered = ordered && d > 0.0 && d < kTwoPi;
-        turn += d;
-      }
-      if (ordered && std::abs(turn - kTwoPi) < 1e-6)
-        continue;
-      for (const auto& edge : edges)
-        if (edge[2] >= 0.0)
-          failing.insert(static_cast<std::size_t>(edge[2]));
-    }
-  }
-
-  static double Orientation(const Point2& o, const Point2& a, const Point2& b)
-  {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  }
-  static bool Inside(const Point2& p, const Point2& a, const Point2& b)
-  {
-    return std::min(a[0], b[0]) <= p[0] && p[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= p[1] &&
-      p[1] <= std::max(a[1], b[1]);
-  }
-  /// Two boundary segments meet other than at a point they share.
-  static bool Meet(const BoundarySegment& s, const BoundarySegment& t)
-  {
-    const bool sharesA = s.IdA == t.IdA || s.IdA == t.IdB;
-    const bool sharesB = s.IdB == t.IdA || s.IdB == t.IdB;
-    if (sharesA && sharesB)
-      return false; // the same edge
-    if (sharesA || sharesB)
-    {
-      // Sharing an end they meet again only by overlapping: the far end of one on the other.
-      const Point2& o = sharesA ? s.A : s.B;
-      const Point2& p = sharesA ? s.B : s.A;
-      const Point2& q = (t.IdA == (sharesA ? s.IdA : s.IdB)) ? t.B : t.A;
-      return (Orientation(o, q, p) == 0.0 && Inside(p, o, q)) || (Orientation(o, p, q) == 0.0 && Inside(q, o, p));
-    }
-    const double d1 = Orientation(t.A, t.B, s.A), d2 = Orientation(t.A, t.B, s.B);
-    const double d3 = Orientation(s.A, s.B, t.A), d4 = Orientation(s.A, s.B, t.B);
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-      return true;
-    return (d1 == 0 && Inside(s.A, t.A, t.B)) || (d2 == 0 && Inside(s.B, t.A, t.B)) ||
-      (d3 == 0 && Inside(t.A, s.A, s.B)) || (d4 == 0 && Inside(t.B, s.A, s.B));
+    for (std::size_t c : MeetingCurves(curves, Bounds.Tolerance))
+      if (pieceOf[c] >= 0)
+        failing.insert(static_cast<std::size_t>(pieceOf[c]));
   }
 
   const SimplexMesh& Linear;

@@ -19,10 +19,10 @@
  *   the polylines together. Pixel edges with only straight edges within reach
  *   are the linear mesh's, which the decimator already certified, and are
  *   skipped.
- * - crossings: a piece whose polyline crosses or touches another boundary
- *   segment away from a shared point fails (on a mesh without background
- *   cells, curves facing each other across a gap can meet; where cells fill
- *   the box, valid cells cannot overlap).
+ * - crossings: a piece that may meet another boundary curve away from a
+ *   shared vertex fails (CurveCrossings.h proves the others apart). On a mesh
+ *   without background cells, curves facing each other across a gap can meet;
+ *   where cells fill the box, valid cells cannot overlap.
  * Pieces that fail are shortened (scale halved, then straight) and the test
  * repeated; straight pieces are the linear mesh's, so the loop ends.
  * Everything is measured in index space: distances are in voxels.

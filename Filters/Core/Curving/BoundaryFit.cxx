@@ -16,9 +16,6 @@ namespace
 
 double Distance(const Point2& a, const Point2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
-/// cos 60°: a fitted handle may turn at most 60 degrees from either chord at its vertex.
-constexpr double kMinimumHandleCosine = 0.5;
-
 /// The chain seen as segments: their end vertices and chord lengths.
 struct ChainGeometry
 {
@@ -154,6 +151,52 @@ std::vector<Point2> SolveHandles(const ChainGeometry& chain, const std::vector<B
   return m;
 }
 
+/// `h` turned by the smallest angle that leaves it at least 5 degrees inside
+/// the forward half-plane of each chord at vertex i; `fallback` when no
+/// direction is (a reversal).
+Point2 ForwardHandle(const ChainGeometry& chain, std::size_t i, const Point2& h, const Point2& fallback)
+{
+  constexpr double kMargin = 5.0 * 3.141592653589793 / 180.0;
+  constexpr double kQuarter = 0.5 * 3.141592653589793;
+  const std::size_t n = chain.Vertices.size();
+  std::vector<double> chords; // directions of the chords, each towards the next vertex
+  for (std::size_t s : { (i + n - 1) % n, i })
+  {
+    if (s >= chain.Count() || (chain.Start(s) != i && chain.End(s) != i) || !(chain.Chord(s) > 0.0))
+      continue;
+    const Point2& a = chain.Vertices[chain.Start(s)];
+    const Point2& b = chain.Vertices[chain.End(s)];
+    chords.push_back(std::atan2(b[1] - a[1], b[0] - a[0]));
+  }
+  const double length = std::hypot(h[0], h[1]);
+  if (chords.empty() || !(length > 0.0))
+    return h;
+  auto gap = [](double x, double y) { return std::abs(std::remainder(x - y, 2.0 * 3.141592653589793)); };
+  auto forward = [&](double angle) {
+    for (double c : chords)
+      if (gap(angle, c) > kQuarter - kMargin + 1e-12)
+        return false;
+    return true;
+  };
+  const double angle = std::atan2(h[1], h[0]);
+  if (forward(angle))
+    return h;
+  double best = angle, turn = HUGE_VAL;
+  for (double c : chords)
+    for (double side : { -1.0, 1.0 })
+    {
+      const double candidate = c + side * (kQuarter - kMargin);
+      if (forward(candidate) && gap(candidate, angle) < turn)
+      {
+        turn = gap(candidate, angle);
+        best = candidate;
+      }
+    }
+  if (turn == HUGE_VAL)
+    return fallback;
+  return { length * std::cos(best), length * std::sin(best) };
+}
+
 } // namespace
 
 std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices, bool closed,
@@ -180,31 +223,19 @@ std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices,
         parameters[k] = Reproject(SegmentControlPoints(chain, m, samples[k].Segment), samples[k].Point, parameters[k]);
     }
   }
-  // A handle that leaves its vertex backwards or steeply across a chord
-  // makes the cubic loop or cross its neighbour: such a vertex keeps
-  // Figure 17a's handle. A handle longer than half a chord can loop too;
-  // shortening it along its own direction keeps the joint's tangent.
-  const std::size_t n = vertices.size();
-  for (std::size_t i = 0; i < n; ++i)
+  // A handle pointing backwards along a chord at its vertex makes the cubic
+  // loop or cross its neighbour: it is turned, as little as it takes, to make
+  // at least 5 degrees with the perpendiculars of both chords. A handle longer
+  // than half a chord can make the cubic loop too; shortening it along its own
+  // direction keeps the joint's tangent. (Loops and crossings that remain are
+  // the curver's to find: CurveCrossings.h.)
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    m[i] = ForwardHandle(chain, i, m[i], prior[i]);
+  for (Point2& h : m)
   {
-    Point2& h = m[i];
     const double length = std::hypot(h[0], h[1]);
-    bool steep = !(length > 0.0);
-    for (std::size_t s : { (i + n - 1) % n, i })
-    {
-      if (s >= chain.Count() || (chain.Start(s) != i && chain.End(s) != i))
-        continue;
-      const Point2& a = vertices[chain.Start(s)];
-      const Point2& b = vertices[chain.End(s)];
-      const double c = chain.Chord(s);
-      if (c > 0.0 && length > 0.0)
-        steep = steep || (h[0] * (b[0] - a[0]) + h[1] * (b[1] - a[1])) < kMinimumHandleCosine * c * length;
-    }
-    if (steep)
-      h = prior[i];
-    const double kept = std::hypot(h[0], h[1]);
-    if (kept > 0.5)
-      h = { h[0] * 0.5 / kept, h[1] * 0.5 / kept };
+    if (length > 0.5)
+      h = { h[0] * 0.5 / length, h[1] * 0.5 / length };
   }
   std::vector<std::array<Point2, 2>> out(chain.Count());
   for (std::size_t s = 0; s < chain.Count(); ++s)

@@ -17,10 +17,9 @@
  * (BoundarySamples.h) is a linear least-squares problem, one per chain. A
  * small Tikhonov term pulls each m_i towards Figure 17a's handle (so that
  * segments without samples keep that shape), parameters are corrected by
- * projecting the samples on the curve (Hoschek). A vertex whose fitted handle
- * turns more than 60° from either of its chords keeps Figure 17a's handle
- * (a handle pointing backwards makes the cubic loop), and handles longer than
- * half their chords are shortened along their own direction.
+ * projecting the samples on the curve (Hoschek), and handles longer than half
+ * their chords are shortened along their own direction. Loops and crossings
+ * a fit may still make are found by the curver (CurveCrossings.h).
  */
 
 #include "Curving/BoundarySamples.h"

@@ -41,7 +41,10 @@ double DistanceToChord(const Point2& q, const Point2& a, const Point2& b)
   return std::hypot(a[0] + t * dx - q[0], a[1] + t * dy - q[1]);
 }
 
-void Cut(const Arc& a, double flatness, int depth, std::vector<Arc>& out)
+/// Cuts an arc into pieces within `flatness` of their chords; each cut point
+/// gets a new id (from `nextId`), so that the two pieces it joins are tested
+/// like curves meeting at a vertex: that is what finds a curve's own loops.
+void Cut(const Arc& a, double flatness, int depth, std::int64_t& nextId, std::vector<Arc>& out)
 {
   if (depth >= 16 ||
     std::max(DistanceToChord(a.P[1], a.P[0], a.P[3]), DistanceToChord(a.P[2], a.P[0], a.P[3])) <= flatness)
@@ -49,9 +52,10 @@ void Cut(const Arc& a, double flatness, int depth, std::vector<Arc>& out)
     out.push_back(a);
     return;
   }
-  const auto [left, right] = Split(a);
-  Cut(left, flatness, depth + 1, out);
-  Cut(right, flatness, depth + 1, out);
+  auto [left, right] = Split(a);
+  left.End = right.Start = nextId++;
+  Cut(left, flatness, depth + 1, nextId, out);
+  Cut(right, flatness, depth + 1, nextId, out);
 }
 
 /// A line strictly separates the two control polygons (their hulls are
@@ -161,9 +165,12 @@ bool ProvenApart(const Arc& a, const Arc& b, int depth, int maxDepth)
 
 std::set<std::size_t> MeetingCurves(const std::vector<BoundaryCurve>& curves, double flatness, int maxDepth)
 {
+  std::int64_t nextId = 0;
+  for (const BoundaryCurve& curve : curves)
+    nextId = std::max({ nextId, curve.From + 1, curve.To + 1 });
   std::vector<Arc> arcs;
   for (std::size_t c = 0; c < curves.size(); ++c)
-    Cut(Arc{ curves[c].ControlPoints, curves[c].From, curves[c].To, c }, flatness, 0, arcs);
+    Cut(Arc{ curves[c].ControlPoints, curves[c].From, curves[c].To, c }, flatness, 0, nextId, arcs);
 
   constexpr double kBin = 4.0;
   std::unordered_map<long long, std::vector<std::size_t>> bins;
@@ -188,9 +195,9 @@ std::set<std::size_t> MeetingCurves(const std::vector<BoundaryCurve>& curves, do
       {
         const Arc& a = arcs[members[i]];
         const Arc& b = arcs[members[j]];
-        // Pieces of one curve: consecutive ones share their cut point; a
-        // cubic within the flatness of its chord piece by piece does not loop.
-        if (a.Curve == b.Curve || (meeting.count(a.Curve) && meeting.count(b.Curve)))
+        // Pieces of one curve are tested too (its loops); consecutive ones
+        // share their cut point like curves sharing a vertex.
+        if (meeting.count(a.Curve) && meeting.count(b.Curve))
           continue;
         if (!tested.insert({ std::min(members[i], members[j]), std::max(members[i], members[j]) }).second)
           continue;

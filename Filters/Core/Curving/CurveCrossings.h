@@ -4,8 +4,8 @@
 
 /**
  * @file CurveCrossings.h
- * A proof that boundary curves do not meet except at the mesh vertices they
- * share, by the convex hull property of Bézier curves: two pieces of curve
+ * A proof that boundary curves do not meet, themselves or one another, except
+ * at the mesh vertices they share, by the convex hull property of Bézier curves: two pieces of curve
  * whose control polygons' hulls are disjoint do not meet; two pieces that end
  * at one vertex V meet only at V when the cones from V spanned by their other
  * control points are convex (narrower than a half turn) and disjoint.
@@ -35,8 +35,10 @@ struct BoundaryCurve
 };
 
 /// Indices of the curves that may meet another curve away from a shared end
-/// vertex. Curves are first cut into pieces within `flatness` of their chords
-/// (which bins them compactly); straight curves that meet are reported too.
+/// vertex, or loop. Curves are first cut into pieces within `flatness` of
+/// their chords (which bins them compactly), and the pieces of one curve are
+/// tested against each other too, consecutive ones at their shared cut point
+/// as at a vertex; straight curves that meet are reported too.
 std::set<std::size_t> MeetingCurves(const std::vector<BoundaryCurve>& curves, double flatness, int maxDepth = 12);
 
 } // namespace labelmesher

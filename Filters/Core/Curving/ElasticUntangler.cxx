@@ -70,6 +70,10 @@ constexpr double MinimumAreaRatio = 1e-6;
 
 /// Relative residual of the iterative solve: far below any geometric tolerance.
 constexpr double SolverTolerance = 1e-11;
+/// Free degrees of freedom up to which the body is factorised without trying
+/// CG: on decimated meshes (thousands of cells whose areas differ by orders of
+/// magnitude) CG needs hundreds of iterations per step and the fill-in is small.
+constexpr Eigen::Index kLargestDirectBody = 100000;
 
 /// The nine control triangles of a cubic net as VTK slots: six upward
 /// (P_{i+1,j,k}, P_{i,j+1,k}, P_{i,j,k+1}), i + j + k = 2, and three downward
@@ -251,10 +255,16 @@ bool ElasticBody::Step(std::vector<Point2>& x, const std::vector<Point2>& increm
     }
   }
 
+  // Small bodies (decimated meshes) are factorised outright; large ones try
   // CG first, the factorisation only when it stalls (see the file comment).
-  Iterative.compute(K);
-  Solution = Iterative.solveWithGuess(Rhs, Solution);
-  if (Iterative.info() != Eigen::Success || !Solution.allFinite())
+  bool solved = false;
+  if (K.rows() > kLargestDirectBody)
+  {
+    Iterative.compute(K);
+    Solution = Iterative.solveWithGuess(Rhs, Solution);
+    solved = Iterative.info() == Eigen::Success && Solution.allFinite();
+  }
+  if (!solved)
   {
     if (!Analysed)
     {

@@ -143,6 +143,62 @@ class DiscTest(unittest.TestCase):
         self.assertEqual(grid.GetFieldData().GetArray("Smoothness").GetValue(0), 1)
 
 
+class DecimatedPipelineTest(unittest.TestCase):
+    """mesher -> decimator -> curver, as `labelmesher curve` runs them: the
+    curves keep the bounds the decimator's output records, do not cross, keep
+    the topology, and misclassify fewer pixels than the decimated mesh."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.image = disc_image(n=72, radius=27.4)
+        mesher = labelmesher.vtkLabelOctreeMesher()
+        mesher.SetInputData(cls.image)
+        mesher.SetIncludeBackground(True)
+        decimator = labelmesher.vtkMeshDecimator()
+        decimator.SetInputConnection(0, mesher.GetOutputPort(0))
+        decimator.SetInputDataObject(1, cls.image)
+        decimator.Update()
+        cls.linear = decimator.GetOutput()
+        cls.grid, cls.errors = run_filter(labelmesher.vtkBezierCurver(), cls.linear, cls.image)
+
+    def field(self, name):
+        array = self.grid.GetFieldData().GetArray(name)
+        self.assertIsNotNone(array, name)
+        return array.GetValue(0)
+
+    def test_valid_and_seen_valid_by_vtk(self):
+        self.assertEqual(self.errors, [])
+        self.assertEqual(self.field("InvalidCells"), 0)
+        lowest, highest = jacobian_signs(self.grid, (0, 1))
+        self.assertTrue(lowest > 0 or highest < 0, (lowest, highest))
+
+    def test_bounds_kept_on_the_curves(self):
+        self.assertEqual(self.field("ImageToMeshDistance"), 2.0)
+        self.assertEqual(self.field("MeshToImageDistance"), 2.0)
+        slack = self.field("CurvedMeasureResolution") + 1e-9
+        self.assertLessEqual(self.field("MeasuredImageToMeshDistance"), 2.0 + slack)
+        self.assertLessEqual(self.field("MeasuredMeshToImageDistance"), 2.0 + slack)
+        self.assertEqual(self.field("InterfaceCrossings"), 0)
+        self.assertEqual(self.field("TopologyMatches"), 1)
+        self.assertLessEqual(self.field("ShortenedPieces"), self.field("CurvedEdges"))
+
+    def test_more_accurate_than_the_decimated_mesh(self):
+        linear = self.field("MisclassifiedPixelsLinear")
+        curved = self.field("MisclassifiedPixelsCurved")
+        self.assertGreater(linear, 0)
+        self.assertLess(curved, 0.75 * linear, (linear, curved))
+
+    def test_bounds_can_be_set(self):
+        # Bounds set on the filter override those the input records: looser
+        # ones shorten at most as many pieces.
+        grid, errors = run_filter(labelmesher.vtkBezierCurver(), self.linear, self.image,
+                                  MeshToImageDistance=10.0, ImageToMeshDistance=10.0)
+        self.assertEqual(errors, [])
+        self.assertEqual(grid.GetFieldData().GetArray("MeshToImageDistance").GetValue(0), 10.0)
+        self.assertLessEqual(grid.GetFieldData().GetArray("ShortenedPieces").GetValue(0),
+                             self.field("ShortenedPieces"))
+
+
 class PlaneTest(unittest.TestCase):
     def test_mesh_in_the_xz_plane(self):
         grid, errors = curve(disc_image(normal_axis=1))

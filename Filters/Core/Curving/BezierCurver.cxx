@@ -252,8 +252,11 @@ CurvingResult CurveMesh(
     }
     start = Clock::now();
     ProgressObserver untangling;
+    // Round r fills [1 - 2^-r, 1 - 2^-(r+1)] of the untangling's share, so
+    // that progress never goes back when a round follows.
     untangling.Callback = [&observer, round](const std::string& stage, double fraction) {
-      return observer.Report(stage, std::min(0.9, 0.05 + 0.85 * (round + fraction) / (round + 1.0)));
+      const double done = 1.0 - std::ldexp(1.0, -round), next = 1.0 - std::ldexp(1.0, -round - 1);
+      return observer.Report(stage, 0.05 + 0.85 * (done + (next - done) * fraction));
     };
     result.Mesh = straight;
     const UntanglingResult untangled =

@@ -241,6 +241,10 @@ CurvingResult CurveMesh(
   {
     if (bounded)
     {
+      if (!observer.Report("Keeping distance bounds", 0.05))
+      {
+        throw AbortRequested{};
+      }
       start = Clock::now();
       const std::vector<CurvePiece> before = pieces;
       const FidelityOutcome outcome = KeepDistanceBounds(result.Linear, pieces, parameters.Image, parameters.Bounds);

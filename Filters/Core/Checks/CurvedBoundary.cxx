@@ -3,6 +3,7 @@
 #include "Checks/CurvedBoundary.h"
 
 #include "Curving/CurvePieces.h"
+#include "Support/BoxBins.h"
 
 #include <algorithm>
 #include <cmath>
@@ -131,23 +132,15 @@ std::size_t CountBoundaryCrossings(const SimplexMesh& mesh)
       segments.push_back(key);
   std::sort(segments.begin(), segments.end());
   // Segments in the uniform bins their boxes overlap: segments that meet share a bin.
-  constexpr double kBin = 4.0;
-  std::unordered_map<long long, std::vector<std::size_t>> bins;
+  BoxBins bins(4.0);
   for (std::size_t s = 0; s < segments.size(); ++s)
   {
     const Point3& a = mesh.Points[segments[s].first];
     const Point3& b = mesh.Points[segments[s].second];
-    const long x0 = static_cast<long>(std::floor(std::min(a[0], b[0]) / kBin));
-    const long x1 = static_cast<long>(std::floor(std::max(a[0], b[0]) / kBin));
-    const long y0 = static_cast<long>(std::floor(std::min(a[1], b[1]) / kBin));
-    const long y1 = static_cast<long>(std::floor(std::max(a[1], b[1]) / kBin));
-    for (long y = y0; y <= y1; ++y)
-      for (long x = x0; x <= x1; ++x)
-        bins[(static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL)].push_back(s);
+    bins.Insert(s, { std::min(a[0], b[0]), std::min(a[1], b[1]) }, { std::max(a[0], b[0]), std::max(a[1], b[1]) });
   }
   std::vector<char> crossing(segments.size(), 0);
-  for (const auto& [key, members] : bins)
-  {
+  bins.ForEachBin([&](const std::vector<std::size_t>& members) {
     for (std::size_t i = 0; i < members.size(); ++i)
       for (std::size_t j = i + 1; j < members.size(); ++j)
       {
@@ -172,7 +165,7 @@ std::size_t CountBoundaryCrossings(const SimplexMesh& mesh)
         if (meets)
           crossing[members[i]] = crossing[members[j]] = 1;
       }
-  }
+  });
   return static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), 1));
 }
 

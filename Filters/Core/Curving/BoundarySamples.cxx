@@ -2,6 +2,8 @@
 // Pixel-edge midpoints given to the interface segments they belong to.
 #include "Curving/BoundarySamples.h"
 
+#include "Support/BoxBins.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -26,46 +28,6 @@ std::pair<std::int32_t, std::int32_t> Ordered(std::int32_t a, std::int32_t b)
 {
   return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
 }
-
-/// Segments binned on a uniform grid over the image by their boxes grown by `reach`.
-class SegmentGrid
-{
-public:
-  SegmentGrid(const std::vector<IndexSegment>& segments, const LabelImage& image, double reach)
-    : Cell(std::max(2.0, reach))
-  {
-    Origin = { -1.0 - reach, -1.0 - reach };
-    Size = { static_cast<int>((image.Dimensions[0] + 2.0 + 2.0 * reach) / Cell) + 1,
-      static_cast<int>((image.Dimensions[1] + 2.0 + 2.0 * reach) / Cell) + 1 };
-    Bins.resize(static_cast<std::size_t>(Size[0]) * Size[1]);
-    for (std::size_t s = 0; s < segments.size(); ++s)
-    {
-      const auto& g = segments[s];
-      const int x0 = Clamp(std::min(g.A[0], g.B[0]) - reach, 0), x1 = Clamp(std::max(g.A[0], g.B[0]) + reach, 0);
-      const int y0 = Clamp(std::min(g.A[1], g.B[1]) - reach, 1), y1 = Clamp(std::max(g.A[1], g.B[1]) + reach, 1);
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x)
-          Bins[static_cast<std::size_t>(y) * Size[0] + x].push_back(s);
-    }
-  }
-
-  const std::vector<std::size_t>& Near(const Point2& p) const
-  {
-    return Bins[static_cast<std::size_t>(Clamp(p[1], 1)) * Size[0] + Clamp(p[0], 0)];
-  }
-
-private:
-  int Clamp(double x, int axis) const
-  {
-    const int i = static_cast<int>(std::floor((x - Origin[axis]) / Cell));
-    return std::clamp(i, 0, Size[axis] - 1);
-  }
-
-  double Cell;
-  Point2 Origin;
-  std::array<int, 2> Size;
-  std::vector<std::vector<std::size_t>> Bins;
-};
 
 /// Distance from p to segment ab and the parameter of its nearest point.
 std::pair<double, double> ProjectOnSegment(const Point2& p, const Point2& a, const Point2& b)
@@ -101,14 +63,21 @@ std::vector<std::vector<BoundarySample>> CollectBoundarySamples(const SimplexMes
         Ordered(chain.FirstMaterial, chain.SecondMaterial) });
     }
   }
-  const SegmentGrid grid(segments, labels, reach);
+  // Segments by their boxes grown by `reach`: a midpoint's bin lists every segment within reach.
+  BoxBins grid(std::max(2.0, reach));
+  for (std::size_t s = 0; s < segments.size(); ++s)
+  {
+    const auto& g = segments[s];
+    grid.Insert(s, { std::min(g.A[0], g.B[0]) - reach, std::min(g.A[1], g.B[1]) - reach },
+      { std::max(g.A[0], g.B[0]) + reach, std::max(g.A[1], g.B[1]) + reach });
+  }
 
   auto assign = [&](const Point2& midpoint, std::int32_t a, std::int32_t b) {
     const auto materials = Ordered(a, b);
     double best = std::numeric_limits<double>::infinity();
     std::size_t bestSegment = segments.size();
     double bestParameter = 0.0;
-    for (std::size_t s : grid.Near(midpoint))
+    for (std::size_t s : grid.At(midpoint))
     {
       if (segments[s].Materials != materials)
         continue;

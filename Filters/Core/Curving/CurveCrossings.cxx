@@ -2,9 +2,10 @@
 // Boundary curves proven not to meet away from shared vertices: hull and cone tests with subdivision.
 #include "Curving/CurveCrossings.h"
 
+#include "Support/BoxBins.h"
+
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 #include <utility>
 
 namespace labelmesher
@@ -172,24 +173,21 @@ std::set<std::size_t> MeetingCurves(const std::vector<BoundaryCurve>& curves, do
   for (std::size_t c = 0; c < curves.size(); ++c)
     Cut(Arc{ curves[c].ControlPoints, curves[c].From, curves[c].To, c }, flatness, 0, nextId, arcs);
 
-  constexpr double kBin = 4.0;
-  std::unordered_map<long long, std::vector<std::size_t>> bins;
+  BoxBins bins(4.0);
   for (std::size_t i = 0; i < arcs.size(); ++i)
   {
-    double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+    BoxBins::Point lo{ HUGE_VAL, HUGE_VAL }, hi{ -HUGE_VAL, -HUGE_VAL };
     for (const Point2& p : arcs[i].P)
       for (int d = 0; d < 2; ++d)
       {
         lo[d] = std::min(lo[d], p[d]);
         hi[d] = std::max(hi[d], p[d]);
       }
-    for (long y = static_cast<long>(std::floor(lo[1] / kBin)); y <= static_cast<long>(std::floor(hi[1] / kBin)); ++y)
-      for (long x = static_cast<long>(std::floor(lo[0] / kBin)); x <= static_cast<long>(std::floor(hi[0] / kBin)); ++x)
-        bins[(static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL)].push_back(i);
+    bins.Insert(i, lo, hi);
   }
   std::set<std::size_t> meeting;
   std::set<std::pair<std::size_t, std::size_t>> tested;
-  for (const auto& [key, members] : bins)
+  bins.ForEachBin([&](const std::vector<std::size_t>& members) {
     for (std::size_t i = 0; i < members.size(); ++i)
       for (std::size_t j = i + 1; j < members.size(); ++j)
       {
@@ -207,6 +205,7 @@ std::set<std::size_t> MeetingCurves(const std::vector<BoundaryCurve>& curves, do
           meeting.insert(b.Curve);
         }
       }
+  });
   return meeting;
 }
 

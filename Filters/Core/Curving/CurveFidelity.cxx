@@ -4,6 +4,7 @@
 
 #include "Criteria/DistanceBound.h"
 #include "Curving/CurveCrossings.h"
+#include "Support/BoxBins.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,37 +39,19 @@ ConvexPiece AsPiece(const BoundarySegment& s)
   return p;
 }
 
-/// Segments binned on a uniform grid by their boxes grown by `reach`: a
-/// query at p returns every segment within `reach` of p (and others).
-class SegmentBins
+/// Segments binned by their boxes grown by `reach`: a point's bin lists every
+/// segment within `reach` of it (and others).
+BoxBins BinSegments(const std::vector<BoundarySegment>& segments, double reach, double cell)
 {
-public:
-  SegmentBins(const std::vector<BoundarySegment>& segments, double reach, double cell)
-    : Cell(cell)
+  BoxBins bins(cell);
+  for (std::size_t s = 0; s < segments.size(); ++s)
   {
-    for (std::size_t s = 0; s < segments.size(); ++s)
-    {
-      const auto& g = segments[s];
-      const long x0 = Bin(std::min(g.A[0], g.B[0]) - reach), x1 = Bin(std::max(g.A[0], g.B[0]) + reach);
-      const long y0 = Bin(std::min(g.A[1], g.B[1]) - reach), y1 = Bin(std::max(g.A[1], g.B[1]) + reach);
-      for (long y = y0; y <= y1; ++y)
-        for (long x = x0; x <= x1; ++x)
-          Bins[Key(x, y)].push_back(s);
-    }
+    const auto& g = segments[s];
+    bins.Insert(s, { std::min(g.A[0], g.B[0]) - reach, std::min(g.A[1], g.B[1]) - reach },
+      { std::max(g.A[0], g.B[0]) + reach, std::max(g.A[1], g.B[1]) + reach });
   }
-  const std::vector<std::size_t>& Near(const Point2& p) const
-  {
-    const auto it = Bins.find(Key(Bin(p[0]), Bin(p[1])));
-    return it == Bins.end() ? Empty : it->second;
-  }
-
-private:
-  long Bin(double x) const { return static_cast<long>(std::floor(x / Cell)); }
-  static long long Key(long x, long y) { return (static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL); }
-  double Cell;
-  std::unordered_map<long long, std::vector<std::size_t>> Bins;
-  std::vector<std::size_t> Empty;
-};
+  return bins;
+}
 
 /// The pixel edges between different labels, outside the image counting as 0.
 std::vector<BoundarySegment> ImageBoundary(const LabelImage& image)
@@ -138,7 +121,7 @@ public:
     , Image(image)
     , Bounds(bounds)
     , PixelEdges(ImageBoundary(*image.Image))
-    , PixelBins(PixelEdges, 0.5, 4.0)
+    , PixelBins(BinSegments(PixelEdges, 0.5, 4.0))
     , Edges(MeshBoundary(linear, pieces))
   {
   }
@@ -197,9 +180,11 @@ private:
       std::vector<ConvexPiece> targets;
       std::set<std::size_t> seen;
       const double reach = h + 0.5;
-      for (double y = std::floor((lo[1] - reach) / 4.0) * 4.0; y <= hi[1] + reach + 4.0; y += 4.0)
-        for (double x = std::floor((lo[0] - reach) / 4.0) * 4.0; x <= hi[0] + reach + 4.0; x += 4.0)
-          for (std::size_t e : PixelBins.Near({ x, y }))
+      // One query point in every bin the grown box overlaps.
+      const double cell = PixelBins.CellSize();
+      for (double y = std::floor((lo[1] - reach) / cell) * cell; y <= hi[1] + reach + cell; y += cell)
+        for (double x = std::floor((lo[0] - reach) / cell) * cell; x <= hi[0] + reach + cell; x += cell)
+          for (std::size_t e : PixelBins.At({ x, y }))
             if (PixelEdges[e].Bounds(m) && seen.insert(e).second)
               targets.push_back(AsPiece(PixelEdges[e]));
       for (std::size_t s = first; s < last; ++s)
@@ -214,11 +199,11 @@ private:
   void ImageToMeshFailures(const std::vector<BoundarySegment>& segments, std::set<std::size_t>& failing) const
   {
     const double h = Bounds.ImageToMesh;
-    const SegmentBins bins(segments, h + 0.5, 4.0);
+    const BoxBins bins = BinSegments(segments, h + 0.5, 4.0);
     for (const BoundarySegment& edge : PixelEdges)
     {
       const Point2 mid{ 0.5 * (edge.A[0] + edge.B[0]), 0.5 * (edge.A[1] + edge.B[1]) };
-      const auto& near = bins.Near(mid);
+      const auto& near = bins.At(mid);
       for (std::int32_t m : { edge.First, edge.Second })
       {
         if (m == 0)
@@ -290,7 +275,7 @@ private:
   const ImageOnMesh& Image;
   const CurveBounds& Bounds;
   std::vector<BoundarySegment> PixelEdges;
-  SegmentBins PixelBins;
+  BoxBins PixelBins;
   std::vector<MeshBoundaryEdge> Edges;
 };
 

@@ -31,8 +31,9 @@
  *    elasticity on the control nets, the boundary displacement applied in
  *    increasing fractions until every cell is valid (section 4.3, Figure 21).
  *    Cells still invalid have their curved edges (or, if none, the curves at
- *    their corners) shortened the same way and untangling runs again, up to 8
- *    rounds; straight pieces make a straight, valid mesh, so this ends valid.
+ *    their corners, ring by ring) shortened the same way -- made straight
+ *    from a cell's second invalid round -- and untangling runs again, up to 8
+ *    rounds; straight pieces make a straight, valid mesh.
  *    A shortened piece keeps its end tangents' directions: the joints stay
  *    tangent continuous (G1); C1 or C2 holds where neither piece was shortened.
  * 4. Every cell's Jacobian determinant, a quartic Bézier triangle (Table 1), is

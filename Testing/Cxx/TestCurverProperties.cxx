@@ -73,7 +73,9 @@ INSTANTIATE_TEST_SUITE_P(Shards, CurverProperties, ::testing::Range(0, 4));
 /// direction crossed below the polylines' resolution (smooth 104341, 112312;
 /// boxes 100386, 101577: now the cone test of CurveCrossings.h), and a 5-degree
 /// sliver stayed invalid with every curve at its corners straight (smooth
-/// 100033: now the curves one ring further out are shortened).
+/// 100033: now the curves one ring further out are shortened; smooth 210712:
+/// a cell stayed invalid through all eight rounds while its curves were
+/// halved, now they are straightened from its second invalid round).
 TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
 {
   struct Case
@@ -81,8 +83,8 @@ TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
     bool Boxes;
     std::uint64_t Seed;
   };
-  for (const Case& c : { Case{ false, 100033 }, Case{ false, 104341 }, Case{ false, 112312 }, Case{ true, 100386 },
-         Case{ true, 101577 } })
+  for (const Case& c : { Case{ false, 100033 }, Case{ false, 104341 }, Case{ false, 112312 }, Case{ false, 210712 },
+         Case{ true, 100386 }, Case{ true, 101577 } })
   {
     const testing::RandomLabelImage random = c.Boxes ? testing::GenerateRandomBoxImage(c.Seed, 2, 24)
                                                      : testing::GenerateRandomLabelImageWithDescription(c.Seed, 2);

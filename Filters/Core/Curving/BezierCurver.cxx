@@ -114,11 +114,13 @@ std::vector<std::pair<std::int64_t, Point2>> Targets(const SimplexMesh& linear, 
 /// Shortens the curved pieces on the edges of `cells`; for a cell without a
 /// curved edge, those ending at its corners, or failing that at the corners
 /// of the cells around them, ring by ring (a sliver is squeezed by the
-/// elastic displacement of curves nearby). False when none was left.
+/// elastic displacement of curves nearby). `invalidRounds` counts the rounds
+/// each cell has been invalid in; from its second, its pieces are made
+/// straight rather than halved. False when none was left.
 bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size_t>& cells,
-  std::vector<CurvePiece>& pieces, std::set<std::size_t>& shortened)
+  std::map<std::size_t, int>& invalidRounds, std::vector<CurvePiece>& pieces, std::set<std::size_t>& shortened)
 {
-  constexpr int kRings = 4;
+  constexpr int kRings = 8;
   std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> pieceOf;
   std::multimap<std::int64_t, std::size_t> piecesAt;
   for (std::size_t p = 0; p < pieces.size(); ++p)
@@ -132,9 +134,12 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
     for (int k = 0; k < 3; ++k)
       cellsAt.emplace(linear.Cell(c)[k], c);
 
-  std::set<std::size_t> chosen;
+  std::set<std::size_t> chosen, straighten;
   for (std::size_t c : cells)
   {
+    // A cell still invalid after a halving gets its curves straightened at
+    // once: halving them again and again would run out of rounds.
+    const bool persistent = ++invalidRounds[c] >= 2;
     const std::int64_t* v = linear.Cell(c);
     std::set<std::size_t> own;
     for (int k = 0; k < 3; ++k)
@@ -157,10 +162,15 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
       ring = std::move(wider);
     }
     chosen.insert(own.begin(), own.end());
+    if (persistent)
+      straighten.insert(own.begin(), own.end());
   }
   for (std::size_t p : chosen)
   {
-    ShortenPiece(pieces[p]);
+    if (straighten.count(p))
+      pieces[p].Scale = 0.0;
+    else
+      ShortenPiece(pieces[p]);
     shortened.insert(p);
   }
   return !chosen.empty();
@@ -237,6 +247,7 @@ CurvingResult CurveMesh(
   const CurvedMesh straight = result.Mesh;
   std::set<std::size_t> shortenedForValidity;
   std::set<std::size_t> shortenedForBounds;
+  std::map<std::size_t, int> invalidRounds;
   for (int round = 0;; ++round)
   {
     if (bounded)
@@ -269,7 +280,7 @@ CurvingResult CurveMesh(
     result.UntanglingRounds = round + 1;
     result.Timings.push_back({ "untangle", SecondsSince(start) });
     if (untangled.Valid || round + 1 >= parameters.MaximumShorteningRounds ||
-      !ShortenPiecesOfCells(result.Linear, untangled.InvalidCells, pieces, shortenedForValidity))
+      !ShortenPiecesOfCells(result.Linear, untangled.InvalidCells, invalidRounds, pieces, shortenedForValidity))
       break;
   }
   result.PiecesShortenedForBounds = shortenedForBounds.size();

@@ -11,6 +11,13 @@
  * placed by iterative linear elasticity (section 4.3), and whose every cell's
  * Jacobian is bounded from below by Bézier subdivision (section 4.2). Cells
  * with two edges on one smooth chain are split first (BoundaryEars.h).
+ *
+ * With the image (CurvingParameters::Image), C1 curves are fitted to it
+ * (BoundaryFit.h), and with distance bounds the curves keep both of them and
+ * are proven not to cross or loop (CurveFidelity.h, CurveCrossings.h): pieces
+ * that fail are shortened (CurvePieces.h). Cells that untangling leaves
+ * invalid get the curves around them shortened and untangling runs again, up
+ * to MaximumShorteningRounds rounds.
  */
 
 #include "Curving/BoundaryEars.h"

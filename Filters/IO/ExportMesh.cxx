@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Flattens the filters' VTK outputs into the writers' ExportMesh.
+#include "ExportMesh.h"
+
+#include "SafeFile.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+namespace labelmesher
+{
+namespace io
+{
+namespace
+{
+
+/// Exact coordinates as a hash key: the interface surface's points are the
+/// mesh's points computed by the same transform, so they compare bit for bit.
+struct PointKey
+{
+  std::array<double, 3> X;
+  bool operator==(const PointKey& o) const { return this->X == o.X; }
+};
+struct PointKeyHash
+{
+  std::size_t operator()(const PointKey& k) const
+  {
+    std::size_t h = 1469598103934665603ull;
+    for (double v : k.X)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+    return h;
+  }
+};
+
+template <typename Key>
+void GroupRuns(const std::vector<Key>& sortedKeys, std::vector<Key>& keys, std::vector<ExportMesh::Group>& groups)
+{
+  for (std::size_t i = 0; i < sortedKeys.size();)
+  {
+    std::size_t j = i;
+    while (j < sortedKeys.size() && sortedKeys[j] == sortedKeys[i])
+    {
+      ++j;
+    }
+    keys.push_back(sortedKeys[i]);
+    groups.push_back({ i, j });
+    i = j;
+  }
+}
+
+} // namespace
+
+ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, const MaterialTable& table)
+{
+  ExportMesh out;
+  out.Table = table;
+  const vtkIdType nCells = mesh->GetNumberOfCells();
+  vtkDataArray* material = mesh->GetCellData()->GetArray("Material");
+  if (!material || material->GetNumberOfComponents() != 1)
+  {
+    throw WriteError("the mesh has no Material cell array");
+  }
+  int cellType = nCells > 0 ? mesh->GetCellType(0) : VTK_TETRA;
+  if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE)
+  {
+    throw WriteError("only linear tetrahedra and triangles can be written in this format (curved meshes: .vtu or .vtk)");
+  }
+  out.Dimension = cellType == VTK_TETRA ? 3 : 2;
+  const int nodes = out.NodesPerCell();
+
+  out.Points.resize(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    mesh->GetPoint(p, out.Points[static_cast<std::size_t>(p)].data());
+  }
+
+  std::vector<std::int32_t> labels(static_cast<std::size_t>(nCells));
+  for (vtkIdType c = 0; c < nCells; ++c)
+  {
+    if (mesh->GetCellType(c) != cellType)
+    {
+      throw WriteError("the mesh mixes cell types; only all-tetrahedra or all-triangle meshes can be written in this format");
+    }
+    labels[static_cast<std::size_t>(c)] = static_cast<std::int32_t>(material->GetComponent(c, 0));
+  }
+  std::vector<std::size_t> order(labels.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return labels[a] < labels[b]; });
+  out.Cells.reserve(order.size() * static_cast<std::size_t>(nodes));
+  out.CellMaterial.reserve(order.size());
+  vtkNew<vtkIdList> ids;
+  for (std::size_t c : order)
+  {
+    mesh->GetCellPoints(static_cast<vtkIdType>(c), ids);
+    for (int k = 0; k < nodes; ++k)
+    {
+      out.Cells.push_back(ids->GetId(k));
+    }
+    out.CellMaterial.push_back(labels[c]);
+  }
+  GroupRuns(out.CellMaterial, out.Materials, out.MaterialCells);
+
+  if (interfaces && interfaces->GetNumberOfCells() > 0)
+  {
+    vtkDataArray* sides = interfaces->GetCellData()->GetArray("Materials");
+    if (!sides || sides->GetNumberOfComponents() != 2)
+    {
+      throw WriteError("the interface surface has no two-component Materials cell array");
+    }
+    std::unordered_map<PointKey, std::int64_t, PointKeyHash> index;
+    index.reserve(out.Points.size());
+    for (std::size_t p = 0; p < out.Points.size(); ++p)
+    {
+      index.emplace(PointKey{ out.Points[p] }, static_cast<std::int64_t>(p));
+    }
+    const int faceNodes = out.NodesPerFace();
+    const vtkIdType nFaces = interfaces->GetNumberOfCells();
+    std::vector<ExportMesh::Pair> pairs(static_cast<std::size_t>(nFaces));
+    std::vector<std::int64_t> faces(static_cast<std::size_t>(nFaces * faceNodes));
+    for (vtkIdType f = 0; f < nFaces; ++f)
+    {
+      interfaces->GetCellPoints(f, ids);
+      if (ids->GetNumberOfIds() != faceNodes)
+      {
+        throw WriteError("the interface surface's cells do not match the mesh's dimension");
+      }
+      for (int k = 0; k < faceNodes; ++k)
+      {
+        PointKey key;
+        interfaces->GetPoint(ids->GetId(k), key.X.data());
+        auto found = index.find(key);
+        if (found == index.end())
+        {
+          throw WriteError("the interface surface is not on the mesh's points (not this mesh's port 1)");
+        }
+        faces[static_cast<std::size_t>(f * faceNodes + k)] = found->second;
+      }
+      const auto a = static_cast<std::int32_t>(sides->GetComponent(f, 0));
+      const auto b = static_cast<std::int32_t>(sides->GetComponent(f, 1));
+      pairs[static_cast<std::size_t>(f)] = { std::min(a, b), std::max(a, b) };
+    }
+    std::vector<std::size_t> faceOrder(pairs.size());
+    std::iota(faceOrder.begin(), faceOrder.end(), std::size_t{ 0 });
+    std::stable_sort(faceOrder.begin(), faceOrder.end(), [&](std::size_t a, std::size_t b) { return pairs[a] < pairs[b]; });
+    std::vector<ExportMesh::Pair> sortedPairs;
+    sortedPairs.reserve(pairs.size());
+    out.Faces.reserve(faces.size());
+    for (std::size_t f : faceOrder)
+    {
+      sortedPairs.push_back(pairs[f]);
+      for (int k = 0; k < faceNodes; ++k)
+      {
+        out.Faces.push_back(faces[f * static_cast<std::size_t>(faceNodes) + static_cast<std::size_t>(k)]);
+      }
+    }
+    GroupRuns(sortedPairs, out.Interfaces, out.InterfaceFaces);
+  }
+
+  if (out.Dimension == 2 && !out.Points.empty())
+  {
+    for (int axis = 2; axis >= 0 && out.FlatAxis < 0; --axis)
+    {
+      const double v = out.Points[0][static_cast<std::size_t>(axis)];
+      if (std::all_of(out.Points.begin(), out.Points.end(), [&](const std::array<double, 3>& p) { return p[static_cast<std::size_t>(axis)] == v; }))
+      {
+        out.FlatAxis = axis;
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::size_t> WrittenAxes(const ExportMesh& mesh)
+{
+  std::vector<std::size_t> axes;
+  for (std::size_t a = 0; a < 3; ++a)
+  {
+    if (!(mesh.Dimension == 2 && static_cast<int>(a) == mesh.FlatAxis))
+    {
+      axes.push_back(a);
+    }
+  }
+  return axes;
+}
+
+double PlanarArea(const ExportMesh& mesh, const std::int64_t* cell)
+{
+  const std::vector<std::size_t> axes = WrittenAxes(mesh);
+  const auto& a = mesh.Points[static_cast<std::size_t>(cell[0])];
+  const auto& b = mesh.Points[static_cast<std::size_t>(cell[1])];
+  const auto& c = mesh.Points[static_cast<std::size_t>(cell[2])];
+  const std::size_t u = axes[0], v = axes[1];
+  return (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
+}
+
+} // namespace io
+} // namespace labelmesher

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_io_VtkFileWriters_h
+#define labelmesher_io_VtkFileWriters_h
+
+/**
+ * @file VtkFileWriters.h
+ * VTK's own formats through VTK's writers, into a checked stream: .vtu (XML,
+ * appended, zlib level 1), legacy .vtk (binary) and .vtp (the interface
+ * surface). String arrays of the field data (StageName, MaterialName) are
+ * written as unsigned-char arrays of the same name holding the UTF-8 strings
+ * one after another, each ended by a NUL byte: readers without VTK's String
+ * type (meshio) then read the file, and DecodeStrings() gives the strings back.
+ */
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+class vtkDataArray;
+
+namespace labelmesher
+{
+namespace io
+{
+
+void WriteVtu(vtkDataObject* mesh, std::ostream& out);
+void WriteLegacyVtk(vtkDataObject* mesh, std::ostream& out);
+void WriteVtp(vtkDataObject* surface, std::ostream& out);
+
+/// The strings of an array written by these writers in place of a string array.
+std::vector<std::string> DecodeStrings(vtkDataArray* bytes);
+
+} // namespace io
+} // namespace labelmesher
+
+#endif

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Reads label images (ITK formats, .vti, .png) into vtkImageData, checking every rule of the CLI's
-// input.
+// input; ReadLabeledImage hands .seg.nrrd files to SegmentationReader.cxx.
 #include "ImageReader.h"
 
+#include "ImageChecks.h"
+#include "PngCheck.h"
+#include "SegmentationReader.h"
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
@@ -22,12 +25,8 @@
 #include "vtkXMLImageDataReader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -36,92 +35,12 @@ namespace labelmesher_cli
 namespace
 {
 
-namespace fs = std::filesystem;
-
-std::string VoxelText(std::size_t flat, const int dims[3])
-{
-  const std::size_t nx = dims[0], ny = dims[1];
-  std::ostringstream s;
-  s << "(" << flat % nx << ", " << (flat / nx) % ny << ", " << flat / (nx * ny) << ")";
-  return s.str();
-}
-
-void CheckSpacing(const double spacing[3], const std::string& path)
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
-    {
-      std::ostringstream s;
-      s << "'" << path << "' has spacing " << spacing[a] << " along axis " << a
-        << ": expected a positive, finite value";
-      throw InputError(s.str());
-    }
-  }
-}
+using detail::CheckNotTruncated;
+using detail::CheckSpacing;
+using detail::GeometryFromITK;
+using detail::VoxelText;
 
 // ---- ITK: NRRD, NIfTI, MetaImage ----------------------------------------------
-
-/// Uncompressed formats whose data length we can compare with the header.
-void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
-{
-  const std::string lower = Lower(path);
-  const std::uintmax_t bytes = io->GetImageSizeInBytes();
-  std::uintmax_t fileSize = fs::file_size(path);
-  std::uintmax_t header = 0;
-  if (EndsWith(lower, ".nii"))
-  {
-    header = 352; // NIfTI-1 header + extension flag; vox_offset is at least this
-  }
-  else if (EndsWith(lower, ".mha") || EndsWith(lower, ".nrrd"))
-  {
-    // Attached data: uncompressed only (the header is text, read it).
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    bool raw = false;
-    while (std::getline(in, line) && !line.empty() && line != "\r")
-    {
-      const std::string l = Lower(line);
-      if (l.rfind("encoding:", 0) == 0)
-      {
-        raw = l.find("raw") != std::string::npos;
-      }
-      if (l.rfind("compresseddata", 0) == 0)
-      {
-        raw = l.find("false") != std::string::npos;
-      }
-      if (l.rfind("elementdatafile", 0) == 0)
-      {
-        raw = raw || EndsWith(lower, ".mha");
-        if (l.find("local") == std::string::npos)
-        {
-          return; // detached data file
-        }
-        break; // MetaImage data follows this line
-      }
-      if (l.rfind("data file:", 0) == 0 || l.rfind("datafile:", 0) == 0)
-      {
-        return; // detached NRRD data
-      }
-    }
-    if (!raw)
-    {
-      return;
-    }
-    header = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
-  }
-  else
-  {
-    return;
-  }
-  if (fileSize < header + bytes)
-  {
-    std::ostringstream s;
-    s << "'" << path << "' is truncated: the header announces " << bytes
-      << " bytes of voxel data, the file holds at most " << (fileSize > header ? fileSize - header : 0);
-    throw InputError(s.str());
-  }
-}
 
 template <typename TPixel>
 typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::ImageIOBase* io)
@@ -134,37 +53,6 @@ typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::Im
   typename ImageType::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();
   return image;
-}
-
-template <typename TImage>
-vtkSmartPointer<vtkImageData> GeometryFromITK(TImage* image, const std::string& path)
-{
-  const auto size = image->GetLargestPossibleRegion().GetSize();
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->SetDimensions(static_cast<int>(size[0]), static_cast<int>(size[1]), static_cast<int>(size[2]));
-  double spacing[3], origin[3], direction[9];
-  for (int r = 0; r < 3; ++r)
-  {
-    spacing[r] = image->GetSpacing()[r];
-    origin[r] = image->GetOrigin()[r];
-    for (int c = 0; c < 3; ++c)
-    {
-      direction[3 * r + c] = image->GetDirection()[r][c];
-      if (!std::isfinite(direction[3 * r + c]))
-      {
-        throw InputError("'" + path + "' has a non-finite direction matrix");
-      }
-    }
-    if (!std::isfinite(origin[r]))
-    {
-      throw InputError("'" + path + "' has a non-finite origin");
-    }
-  }
-  CheckSpacing(spacing, path);
-  output->SetSpacing(spacing);
-  output->SetOrigin(origin);
-  output->SetDirectionMatrix(direction);
-  return output;
 }
 
 /// Integer pixels: copied as they are (the filter accepts every integer type).
@@ -238,6 +126,7 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
   }
   io->SetFileName(path);
   io->ReadImageInformation();
+  detail::CheckHeaderSpacing(io, path);
   if (io->GetNumberOfComponents() != 1)
   {
     throw InputError("'" + path + "' has " + std::to_string(io->GetNumberOfComponents()) +
@@ -300,15 +189,7 @@ vtkSmartPointer<vtkImageData> ReadWithVTK(const std::string& path)
 
 vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
 {
-  std::error_code ec;
-  if (!fs::exists(path, ec))
-  {
-    throw InputError("cannot read '" + path + "': no such file");
-  }
-  if (!fs::is_regular_file(path, ec))
-  {
-    throw InputError("cannot read '" + path + "': not a regular file");
-  }
+  detail::CheckInputFile(path);
   const std::string lower = Lower(path);
   try
   {
@@ -318,6 +199,7 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
     }
     if (EndsWith(lower, ".png"))
     {
+      CheckPngStructure(path);
       vtkSmartPointer<vtkImageData> image = ReadWithVTK<vtkPNGReader>(path);
       const int components = image->GetNumberOfScalarComponents();
       if (components != 1)
@@ -333,10 +215,19 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
   }
   catch (const itk::ExceptionObject& e)
   {
-    std::string what = e.GetDescription();
-    what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
-    throw InputError("cannot read '" + path + "': " + what);
+    throw detail::ITKReadError(path, e);
   }
+}
+
+LabeledImage ReadLabeledImage(const std::string& path)
+{
+  if (IsSegmentationFile(path))
+  {
+    return ReadSegmentation(path);
+  }
+  LabeledImage result;
+  result.Image = ReadLabelImage(path);
+  return result;
 }
 
 } // namespace labelmesher_cli

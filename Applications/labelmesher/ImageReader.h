@@ -11,12 +11,18 @@
  * 32 bits, non-positive or non-finite spacing, data shorter than the header says
  * (uncompressed files). Label values themselves (negative, all background) are
  * checked by vtkLabelOctreeMesher.
+ *
+ * ReadLabeledImage adds the materials' names and colours where the file has
+ * them: a 3D Slicer segmentation (.seg.nrrd, SegmentationReader.h).
  */
+
+#include "MaterialTable.h"
 
 #include "vtkSmartPointer.h"
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 class vtkImageData;
 
@@ -31,6 +37,18 @@ struct InputError : std::runtime_error
 
 /// Throws InputError. The scalars are named "Labels".
 vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path);
+
+/// A label image with what its file says about the labels.
+struct LabeledImage
+{
+  vtkSmartPointer<vtkImageData> Image;       ///< scalars named "Labels", as ReadLabelImage gives
+  labelmesher::io::MaterialTable Materials; ///< empty for plain images without --labels
+  std::vector<std::string> Notes;            ///< one-line remarks for the user (e.g. labels renumbered)
+};
+
+/// Reads `path`: a .seg.nrrd through ReadSegmentation, anything else through
+/// ReadLabelImage (empty table, no notes). Throws InputError.
+LabeledImage ReadLabeledImage(const std::string& path);
 
 } // namespace labelmesher_cli
 

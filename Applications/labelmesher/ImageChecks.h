@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_ImageChecks_h
+#define labelmesher_cli_ImageChecks_h
+
+/**
+ * @file ImageChecks.h
+ * The checks every input image goes through, whichever reader reads it
+ * (ImageReader.cxx, SegmentationReader.cxx): the path is a regular file,
+ * uncompressed data is as long as the header says, the geometry ITK reports is
+ * finite with positive spacing. Internal to the CLI; each throws InputError.
+ */
+
+#include "ImageReader.h"
+#include "StringUtilities.h"
+
+#include "itkImageIOBase.h"
+#include "itkMacro.h"
+
+#include "vtkImageData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace labelmesher_cli
+{
+namespace detail
+{
+
+/// "(i, j, k)" of the flat point index `flat` in an image of `dims`.
+inline std::string VoxelText(std::size_t flat, const int dims[3])
+{
+  const std::size_t nx = dims[0], ny = dims[1];
+  std::ostringstream s;
+  s << "(" << flat % nx << ", " << (flat / nx) % ny << ", " << flat / (nx * ny) << ")";
+  return s.str();
+}
+
+/// The readers' own messages for a missing path are less clear than this.
+inline void CheckInputFile(const std::string& path)
+{
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+  {
+    throw InputError("cannot read '" + path + "': no such file");
+  }
+  if (!std::filesystem::is_regular_file(path, ec))
+  {
+    throw InputError("cannot read '" + path + "': not a regular file");
+  }
+}
+
+inline void CheckSpacing(const double spacing[3], const std::string& path)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
+    {
+      std::ostringstream s;
+      s << "'" << path << "' has spacing " << spacing[a] << " along axis " << a
+        << ": expected a positive, finite value";
+      throw InputError(s.str());
+    }
+  }
+}
+
+/// Uncompressed formats whose data length we can compare with the header
+/// (ITK reads past the end of a truncated raw file without complaint).
+inline void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
+{
+  const std::string lower = Lower(path);
+  const std::uintmax_t bytes = io->GetImageSizeInBytes();
+  std::uintmax_t fileSize = std::filesystem::file_size(path);
+  std::uintmax_t header = 0;
+  if (EndsWith(lower, ".nii"))
+  {
+    header = 352; // NIfTI-1 header + extension flag; vox_offset is at least this
+  }
+  else if (EndsWith(lower, ".mha") || EndsWith(lower, ".nrrd"))
+  {
+    // Attached data: uncompressed only (the header is text, read it).
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    bool raw = false;
+    while (std::getline(in, line) && !line.empty() && line != "\r")
+    {
+      const std::string l = Lower(line);
+      if (l.rfind("encoding:", 0) == 0)
+      {
+        raw = l.find("raw") != std::string::npos;
+      }
+      if (l.rfind("compresseddata", 0) == 0)
+      {
+        raw = l.find("false") != std::string::npos;
+      }
+      if (l.rfind("elementdatafile", 0) == 0)
+      {
+        raw = raw || EndsWith(lower, ".mha");
+        if (l.find("local") == std::string::npos)
+        {
+          return; // detached data file
+        }
+        break; // MetaImage data follows this line
+      }
+      if (l.rfind("data file:", 0) == 0 || l.rfind("datafile:", 0) == 0)
+      {
+        return; // detached NRRD data
+      }
+    }
+    if (!raw)
+    {
+      return;
+    }
+    header = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
+  }
+  else
+  {
+    return;
+  }
+  if (fileSize < header + bytes)
+  {
+    std::ostringstream s;
+    s << "'" << path << "' is truncated: the header announces " << bytes
+      << " bytes of voxel data, the file holds at most " << (fileSize > header ? fileSize - header : 0);
+    throw InputError(s.str());
+  }
+}
+
+/// An empty vtkImageData with the dimensions, spacing, origin and direction of
+/// the ITK image `image` (itk::Image or itk::VectorImage, 3D).
+template <typename TImage>
+vtkSmartPointer<vtkImageData> GeometryFromITK(TImage* image, const std::string& path)
+{
+  const auto size = image->GetLargestPossibleRegion().GetSize();
+  auto output = vtkSmartPointer<vtkImageData>::New();
+  output->SetDimensions(static_cast<int>(size[0]), static_cast<int>(size[1]), static_cast<int>(size[2]));
+  double spacing[3], origin[3], direction[9];
+  for (int r = 0; r < 3; ++r)
+  {
+    spacing[r] = image->GetSpacing()[r];
+    origin[r] = image->GetOrigin()[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      direction[3 * r + c] = image->GetDirection()[r][c];
+      if (!std::isfinite(direction[3 * r + c]))
+      {
+        throw InputError("'" + path + "' has a non-finite direction matrix");
+      }
+    }
+    if (!std::isfinite(origin[r]))
+    {
+      throw InputError("'" + path + "' has a non-finite origin");
+    }
+  }
+  CheckSpacing(spacing, path);
+  output->SetSpacing(spacing);
+  output->SetOrigin(origin);
+  output->SetDirectionMatrix(direction);
+  return output;
+}
+
+/// An ITK exception as InputError: ITK's descriptions may span lines.
+/// The spacing the file's header gives, checked before ITK builds an image
+/// (ITK refuses a zero spacing with an exception naming an object address).
+/// A negative one is fine here: ITK turns it into a flipped direction.
+inline void CheckHeaderSpacing(itk::ImageIOBase* io, const std::string& path)
+{
+  double spacing[3] = { 1.0, 1.0, 1.0 };
+  for (unsigned int d = 0; d < std::min(3u, io->GetNumberOfDimensions()); ++d)
+  {
+    spacing[d] = std::abs(io->GetSpacing(d));
+  }
+  CheckSpacing(spacing, path);
+}
+
+inline InputError ITKReadError(const std::string& path, const itk::ExceptionObject& e)
+{
+  std::string what = e.GetDescription();
+  what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
+  // ITK's "ITK ERROR: Class(0x55...): " prefix names an object, not the problem.
+  const std::size_t prefix = what.find("): ");
+  if (what.rfind("ITK ERROR: ", 0) == 0 && prefix != std::string::npos)
+  {
+    what = what.substr(prefix + 3);
+  }
+  return InputError("cannot read '" + path + "': " + what);
+}
+
+} // namespace detail
+} // namespace labelmesher_cli
+
+#endif

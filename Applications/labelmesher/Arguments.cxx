@@ -4,6 +4,9 @@
 
 #include "StringUtilities.h"
 
+#include "MeshFiles.h"
+
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -92,10 +95,24 @@ std::string Usage()
          "       Jacobian histogram, the curves' distances and crossings, and pixel\n"
          "       accuracy of the linear vs the curved mesh.\n"
          "\n"
-         "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel)\n"
+         "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel),\n"
+         "        .seg.nrrd (3D Slicer segmentation: segment names, colours, layers)\n"
          "\n"
          "Options:\n"
-         "  -o, --output FILE          output mesh: .vtu (VTK XML) or .vtk (legacy)   [required]\n"
+         "  -o, --output FILE          output file, format by extension; repeat for several\n"
+         "                             [required]. The mesh with a group per material:\n"
+         "                               .vtu  VTK XML         .vtk  VTK legacy (binary)\n"
+         "                               .msh  Gmsh 4.1 ASCII  .inp  Abaqus\n"
+         "                               .mesh Medit\n"
+         "                             the interfaces between materials (mesh only):\n"
+         "                               .vtp  VTK XML         .stl  binary STL (3D)\n"
+         "                               .obj  Wavefront OBJ\n"
+         "                             curve writes .vtu or .vtk (Bezier cells)\n"
+         "  --msh-version 4.1|2.2      Gmsh file version                         [default 4.1]\n"
+         "  --stl-per-interface        one .stl per pair of materials, NAME_A_NAME_B.stl\n"
+         "  --labels FILE              material names (and colours) from an ITK-SNAP label\n"
+         "                             description or a 3D Slicer colour table; without it\n"
+         "                             materials are named label_N (or by the .seg.nrrd)\n"
          "  --image-to-mesh H1         h(I,M) bound: image boundary to mesh boundary, in voxels\n"
          "                             of the smallest spacing                        [default 2]\n"
          "  --mesh-to-image H2         h(M,I) bound: mesh boundary to image boundary, in voxels\n"
@@ -181,7 +198,25 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     else if (word == "-o" || word == "--output")
     {
-      args.Output = takeValue();
+      args.Outputs.push_back(takeValue());
+    }
+    else if (word == "--labels")
+    {
+      args.Labels = takeValue();
+    }
+    else if (word == "--msh-version")
+    {
+      const std::string version = takeValue();
+      if (version != "4.1" && version != "2.2")
+      {
+        throw UsageError("--msh-version expects 4.1 or 2.2, got '" + version + "'");
+      }
+      args.GmshVersion22 = version == "2.2";
+    }
+    else if (word == "--stl-per-interface")
+    {
+      noValue();
+      args.StlPerInterface = true;
     }
     else if (word == "--report")
     {
@@ -307,13 +342,44 @@ Arguments ParseArguments(int argc, const char* const* argv)
     throw UsageError("unexpected argument '" + positional[2] + "'");
   }
   args.Input = positional[1];
-  if (args.Output.empty())
+  if (args.Outputs.empty())
   {
-    throw UsageError("missing -o OUTPUT (.vtu or .vtk)");
+    throw UsageError("missing -o OUTPUT (" + labelmesher::io::KnownExtensions() + ")");
   }
-  if (!EndsWith(args.Output, ".vtu") && !EndsWith(args.Output, ".vtk"))
+  bool gmsh = false, stl = false;
+  for (std::size_t i = 0; i < args.Outputs.size(); ++i)
   {
-    throw UsageError("output '" + args.Output + "' must end in .vtu or .vtk");
+    const std::string& output = args.Outputs[i];
+    const auto format = labelmesher::io::FormatOfPath(output);
+    if (!format)
+    {
+      throw UsageError("output '" + output + "' has an unknown extension: expected one of " +
+        labelmesher::io::KnownExtensions());
+    }
+    if (args.Command == "curve" && !labelmesher::io::HoldsCurvedCells(*format))
+    {
+      throw UsageError("output '" + output + "': curved (Bezier) cells can be written as .vtu or .vtk only");
+    }
+    if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=
+      args.Outputs.begin() + static_cast<std::ptrdiff_t>(i))
+    {
+      throw UsageError("output '" + output + "' is given twice");
+    }
+    gmsh = gmsh || *format == labelmesher::io::MeshFormat::Gmsh;
+    stl = stl || *format == labelmesher::io::MeshFormat::Stl;
+  }
+  if (args.GmshVersion22 && !gmsh)
+  {
+    throw UsageError("--msh-version applies to .msh outputs, and none is given");
+  }
+  if (args.StlPerInterface && !stl)
+  {
+    throw UsageError("--stl-per-interface applies to .stl outputs, and none is given");
+  }
+  if (!args.Report.empty() &&
+    std::find(args.Outputs.begin(), args.Outputs.end(), args.Report) != args.Outputs.end())
+  {
+    throw UsageError("the report '" + args.Report + "' would overwrite an output");
   }
   return args;
 }

@@ -9,6 +9,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace labelmesher_cli
 {
@@ -23,7 +24,10 @@ struct Arguments
 {
   std::string Command;             ///< "mesh" or "curve"
   std::string Input;
-  std::string Output;              ///< .vtu (VTK XML) or .vtk (legacy)
+  std::vector<std::string> Outputs; ///< one or more, format by extension (labelmesher::io::FormatOfPath)
+  std::string Labels;               ///< --labels colour table (ITK-SNAP or 3D Slicer); empty: none
+  bool GmshVersion22 = false;       ///< --msh-version 2.2
+  bool StlPerInterface = false;     ///< --stl-per-interface
   std::string Report;              ///< JSON report path; empty: none
   double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
   double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing

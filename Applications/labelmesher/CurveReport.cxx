@@ -187,7 +187,14 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.BeginObject();
   j.Key("command").String("curve");
   j.Key("input").String(r.Linear.Input);
-  j.Key("output").String(r.Linear.Output);
+  j.Key("output").String(r.Linear.Outputs.empty() ? std::string() : r.Linear.Outputs.front());
+  j.Key("outputs").BeginArray();
+  for (const std::string& o : r.Linear.Outputs)
+  {
+    j.String(o);
+  }
+  j.EndArray();
+  WriteMaterialTableJson(r.Linear, j);
   j.Key("parameters").BeginObject();
   j.Key("smoothness").Integer(r.Smoothness);
   j.Key("tension").Number(r.Tension);

@@ -80,7 +80,7 @@ RunReport MakeReport(
 {
   RunReport r;
   r.Input = args.Input;
-  r.Output = args.Output;
+  r.Outputs = args.Outputs;
   image->GetDimensions(r.Dimensions.data());
   image->GetSpacing(r.Spacing.data());
   r.IncludeBackground = args.IncludeBackground;
@@ -146,18 +146,62 @@ RunReport MakeReport(
   return r;
 }
 
+std::string OutputList(const RunReport& r)
+{
+  std::string list;
+  for (const std::string& o : r.Outputs)
+  {
+    list += (list.empty() ? "" : ", ") + o;
+  }
+  return list;
+}
+
+void WriteMaterialTableJson(const RunReport& r, JsonWriter& j)
+{
+  j.Key("material_table").BeginArray();
+  for (const auto& entry : r.CellsPerMaterial)
+  {
+    const labelmesher::io::MaterialInfo* info = r.Materials.Find(entry.first);
+    j.BeginObject();
+    j.Key("label").Integer(entry.first);
+    j.Key("name").String(r.Materials.NameOf(entry.first));
+    j.Key("color");
+    if (info && info->HasColor())
+    {
+      j.BeginArray();
+      for (double v : info->Color)
+      {
+        j.Number(v);
+      }
+      j.EndArray();
+    }
+    else
+    {
+      j.Null();
+    }
+    j.Key("cells").Integer(entry.second);
+    j.EndObject();
+  }
+  j.EndArray();
+}
+
 void PrintSummary(const RunReport& r, std::ostream& out)
 {
   const char* cellName = r.MeshDimension == 3 ? "tetrahedra" : "triangles";
   out << "Input   " << r.Input << "  (" << r.Dimensions[0] << " x " << r.Dimensions[1] << " x "
       << r.Dimensions[2] << " voxels, spacing " << r.Spacing[0] << " x " << r.Spacing[1] << " x "
       << r.Spacing[2] << ")\n";
-  out << "Output  " << r.Output << "  (" << r.Cells << " " << cellName << ", " << r.Points
+  for (const std::string& note : r.Notes)
+  {
+    out << "Note    " << note << "\n";
+  }
+  out << "Output  " << OutputList(r) << "  (" << r.Cells << " " << cellName << ", " << r.Points
       << " points)\n";
   out << "Cells per material:\n";
   for (const auto& entry : r.CellsPerMaterial)
   {
-    out << "  " << std::setw(6) << entry.first << "  " << entry.second << "\n";
+    out << "  " << std::setw(6) << entry.first << "  " << std::setw(9) << entry.second << "  "
+        << r.Materials.NameOf(entry.first) << "\n";
   }
   if (r.Decimation)
   {
@@ -248,7 +292,20 @@ void WriteJson(const RunReport& r, std::ostream& out)
   };
   j.BeginObject();
   j.Key("input").String(r.Input);
-  j.Key("output").String(r.Output);
+  j.Key("output").String(r.Outputs.empty() ? std::string() : r.Outputs.front());
+  j.Key("outputs").BeginArray();
+  for (const std::string& o : r.Outputs)
+  {
+    j.String(o);
+  }
+  j.EndArray();
+  j.Key("notes").BeginArray();
+  for (const std::string& n : r.Notes)
+  {
+    j.String(n);
+  }
+  j.EndArray();
+  WriteMaterialTableJson(r, j);
   j.Key("image").BeginObject();
   j.Key("dimensions").BeginArray();
   for (int d : r.Dimensions)

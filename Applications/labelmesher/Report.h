@@ -8,6 +8,8 @@
  * field data) and printed as a text summary or written as JSON.
  */
 
+#include "MaterialTable.h"
+
 #include "vtkType.h"
 
 #include <array>
@@ -48,7 +50,10 @@ struct DecimationEntry
 
 struct RunReport
 {
-  std::string Input, Output;
+  std::string Input;
+  std::vector<std::string> Outputs; ///< every file written, in the order of -o
+  labelmesher::io::MaterialTable Materials; ///< names and colours (names default to label_N)
+  std::vector<std::string> Notes;   ///< remarks of the reader (e.g. renumbered segments)
   std::array<int, 3> Dimensions{ 0, 0, 0 };
   std::array<double, 3> Spacing{ 0, 0, 0 };
   int MeshDimension = 3;
@@ -87,6 +92,10 @@ std::string FormatFixed(double value, int digits);
 RunReport MakeReport(
   const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
 void PrintSummary(const RunReport& report, std::ostream& out);
+/// "a.vtu, b.msh"
+std::string OutputList(const RunReport& report);
+/// The report's "material_table": label, name, colour (or null), cells.
+void WriteMaterialTableJson(const RunReport& report, JsonWriter& json);
 void WriteJson(const RunReport& report, std::ostream& out);
 /// The report's "decimation" value: an object, or null with --no-decimate.
 void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& json);

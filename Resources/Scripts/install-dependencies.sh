@@ -10,11 +10,13 @@ packages=(
   libvtk9-dev python3-vtk9            # VTK 9.1 + its Python wrapping (filters, I/O, module system)
   libinsighttoolkit5-dev libgdcm-tools # ITK 5.2 image readers (NRRD, NIfTI, MetaImage); gdcm tools silence ITK's config
   libeigen3-dev
+  zlib1g-dev                           # the CLI's PNG structure check
   qtbase5-dev
   libp4est-dev mpi-default-dev        # the octree (p4est 2.2, GPL-2.0-or-later) and the MPI it is built against
   libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
   libcgal-dev                          # baseline comparisons in the benchmarks
   python3-numpy                        # Python tests
+  python3-meshio gmsh                  # independent readers of the mesh files in the tests (meshio, gmsh -check)
 )
 
 missing=()

@@ -245,7 +245,7 @@ def case_negative_spacing():
 def case_bad_option():
     expect_failure(run("mesh", "in.nrrd", "-o", path("out.vtu"), "--hausdorff", "-1"),
                    "non-negative", status=2)
-    expect_failure(run("mesh", "in.nrrd", "-o", path("out.stl")), ".vtu or .vtk", status=2)
+    expect_failure(run("mesh", "in.nrrd", "-o", path("out.stl.gz")), "unknown extension", status=2)
     expect_failure(run("mesh", "in.nrrd"), "missing -o", status=2)
 
 

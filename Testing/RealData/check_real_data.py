@@ -12,7 +12,10 @@ guarantee from the JSON report (which the measuring component fills in):
   no face shared by more than two cells, no hanging vertex, a watertight
   boundary;
 - both measured one-sided Hausdorff distances within their bounds;
-- per material, components and Euler characteristic of mesh and voxels equal.
+- per material, components and Euler characteristic of mesh and voxels equal;
+- decimated: the mesh also written as .msh, .inp, .mesh, .vtp, .obj (and .stl
+  in 3D) in the same run, each read back by meshio / gmsh / VTK and compared
+  with the .vtu (Testing/Support/export_checks.py).
 
 usage: check_real_data.py LABELMESHER INPUT WORKDIR [--no-decimate]
 """
@@ -20,6 +23,9 @@ import json
 import os
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from export_checks import check_exports  # noqa: E402
 
 PROVEN_DIHEDRAL = 30.0
 PROVEN_PLANAR = 45.0
@@ -34,8 +40,14 @@ def main():
     name = os.path.splitext(os.path.basename(image))[0] + ("" if decimate else "_initial")
     mesh = os.path.join(workdir, name + ".vtu")
     report_path = os.path.join(workdir, name + ".json")
+    exports = {}
+    if decimate:
+        formats = [".msh", ".inp", ".mesh", ".vtp", ".obj"] + ([] if image.endswith(".png") else [".stl"])
+        exports = {f: os.path.join(workdir, name + f) for f in formats}
     command = [labelmesher, "mesh", image, "-o", mesh, "--report", report_path,
                "--hausdorff", str(BOUND), "--include-background"] + ([] if decimate else ["--no-decimate"])
+    for path in exports.values():
+        command += ["-o", path]
     run = subprocess.run(command, capture_output=True, text=True)
     print(run.stdout)
     if run.returncode != 0:
@@ -43,9 +55,12 @@ def main():
         sys.exit("labelmesher failed with status %d" % run.returncode)
     with open(report_path) as f:
         report = json.load(f)
-    os.remove(mesh)  # large; the report holds what is checked
-
     failures = []
+    if exports:
+        failures += check_exports(mesh, exports, {}, report["mesh"]["dimension"])
+    for path in [mesh] + list(exports.values()):
+        os.remove(path)  # large; the report holds what is checked
+
     quality = report["quality"]
     bound = PROVEN_DIHEDRAL if report["mesh"]["dimension"] == 3 else PROVEN_PLANAR
     if decimate:

@@ -86,18 +86,25 @@ void WriteThrough(Writer* writer, vtkDataObject* data)
   }
 }
 
-} // namespace
-
-void WriteVtu(vtkDataObject* mesh, std::ostream& out)
+/// VTK XML (`XMLWriter`: unstructured grid or polydata), appended, zlib level 1.
+template <typename XMLWriter>
+void WriteXml(vtkDataObject* data, std::ostream& out)
 {
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  vtkNew<XMLWriter> writer;
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
   // Level 1: 2.5x faster than the default 5 on a 6.8 M-tet mesh, files 13 % larger.
   writer->SetCompressionLevel(1);
-  WriteThrough(writer.Get(), mesh);
-  const std::string& text = writer->GetOutputString();
+  WriteThrough(writer.Get(), data);
+  const std::string text = writer->GetOutputString();
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+} // namespace
+
+void WriteVtu(vtkDataObject* mesh, std::ostream& out)
+{
+  WriteXml<vtkXMLUnstructuredGridWriter>(mesh, out);
 }
 
 void WriteLegacyVtk(vtkDataObject* mesh, std::ostream& out)
@@ -110,13 +117,7 @@ void WriteLegacyVtk(vtkDataObject* mesh, std::ostream& out)
 
 void WriteVtp(vtkDataObject* surface, std::ostream& out)
 {
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
-  writer->SetCompressionLevel(1);
-  WriteThrough(writer.Get(), surface);
-  const std::string& text = writer->GetOutputString();
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  WriteXml<vtkXMLPolyDataWriter>(surface, out);
 }
 
 std::vector<std::string> DecodeStrings(vtkDataArray* bytes)

@@ -109,7 +109,7 @@ std::string Usage()
          "                               .obj  Wavefront OBJ\n"
          "                             curve writes .vtu or .vtk (Bezier cells)\n"
          "  --msh-version 4.1|2.2      Gmsh file version                         [default 4.1]\n"
-         "  --stl-per-interface        one .stl per pair of materials, NAME_A_NAME_B.stl\n"
+         "  --stl-per-interface        one .stl per pair of materials, STEM_NAMEA_NAMEB.stl\n"
          "  --labels FILE              material names (and colours) from an ITK-SNAP label\n"
          "                             description or a 3D Slicer colour table; without it\n"
          "                             materials are named label_N (or by the .seg.nrrd)\n"

@@ -70,16 +70,6 @@ const char* ElementType(const ExportMesh& mesh)
 
 } // namespace
 
-std::string AbaqusSetName(const ExportMesh& mesh, std::int32_t label)
-{
-  const auto at = std::lower_bound(mesh.Materials.begin(), mesh.Materials.end(), label);
-  if (at == mesh.Materials.end() || *at != label)
-  {
-    return Sanitize(mesh.Table.NameOf(label));
-  }
-  return MaterialSetNames(mesh)[static_cast<std::size_t>(at - mesh.Materials.begin())];
-}
-
 void WriteAbaqus(const ExportMesh& mesh, std::ostream& out)
 {
   TextOut text(out);

@@ -26,9 +26,6 @@ namespace io
 
 struct ExportMesh;
 
-/// The ELSET name of a material as the writer spells it.
-std::string AbaqusSetName(const ExportMesh& mesh, std::int32_t label);
-
 void WriteAbaqus(const ExportMesh& mesh, std::ostream& out);
 
 } // namespace io

@@ -202,11 +202,11 @@ std::vector<std::size_t> WrittenAxes(const ExportMesh& mesh)
 
 double PlanarArea(const ExportMesh& mesh, const std::int64_t* cell)
 {
-  const std::vector<std::size_t> axes = WrittenAxes(mesh);
+  // The two axes besides FlatAxis, in order.
+  const std::size_t u = mesh.FlatAxis == 0 ? 1 : 0, v = mesh.FlatAxis == 2 ? 1 : 2;
   const auto& a = mesh.Points[static_cast<std::size_t>(cell[0])];
   const auto& b = mesh.Points[static_cast<std::size_t>(cell[1])];
   const auto& c = mesh.Points[static_cast<std::size_t>(cell[2])];
-  const std::size_t u = axes[0], v = axes[1];
   return (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
 }
 

@@ -66,32 +66,5 @@ void StoreMaterialTable(vtkFieldData* fd, const MaterialTable& table)
   fd->AddArray(colors);
 }
 
-MaterialTable LoadMaterialTable(vtkFieldData* fd)
-{
-  MaterialTable table;
-  auto* labels = vtkIntArray::SafeDownCast(fd ? fd->GetAbstractArray("MaterialLabel") : nullptr);
-  auto* names = vtkStringArray::SafeDownCast(fd ? fd->GetAbstractArray("MaterialName") : nullptr);
-  auto* colors = vtkDoubleArray::SafeDownCast(fd ? fd->GetAbstractArray("MaterialColor") : nullptr);
-  if (!labels)
-  {
-    return table;
-  }
-  for (vtkIdType i = 0; i < labels->GetNumberOfValues(); ++i)
-  {
-    MaterialInfo m;
-    m.Label = labels->GetValue(i);
-    if (names && i < names->GetNumberOfValues())
-    {
-      m.Name = names->GetValue(i);
-    }
-    if (colors && colors->GetNumberOfComponents() == 3 && i < colors->GetNumberOfTuples())
-    {
-      colors->GetTuple(i, m.Color.data());
-    }
-    table.Set(m);
-  }
-  return table;
-}
-
 } // namespace io
 } // namespace labelmesher

@@ -53,8 +53,6 @@ private:
 
 /// Writes `table` as MaterialLabel / MaterialName / MaterialColor (replacing them).
 void StoreMaterialTable(vtkFieldData* fd, const MaterialTable& table);
-/// Reads what StoreMaterialTable wrote; an empty table when absent.
-MaterialTable LoadMaterialTable(vtkFieldData* fd);
 
 } // namespace io
 } // namespace labelmesher

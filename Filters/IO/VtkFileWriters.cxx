@@ -120,25 +120,5 @@ void WriteVtp(vtkDataObject* surface, std::ostream& out)
   WriteXml<vtkXMLPolyDataWriter>(surface, out);
 }
 
-std::vector<std::string> DecodeStrings(vtkDataArray* bytes)
-{
-  std::vector<std::string> strings;
-  std::string current;
-  for (vtkIdType i = 0; bytes && i < bytes->GetNumberOfValues(); ++i)
-  {
-    const auto c = static_cast<char>(bytes->GetTuple1(i));
-    if (c == '\0')
-    {
-      strings.push_back(current);
-      current.clear();
-    }
-    else
-    {
-      current += c;
-    }
-  }
-  return strings;
-}
-
 } // namespace io
 } // namespace labelmesher

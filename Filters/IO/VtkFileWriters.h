@@ -9,7 +9,7 @@
  * surface). String arrays of the field data (StageName, MaterialName) are
  * written as unsigned-char arrays of the same name holding the UTF-8 strings
  * one after another, each ended by a NUL byte: readers without VTK's String
- * type (meshio) then read the file, and DecodeStrings() gives the strings back.
+ * type (meshio) then read the file (`bytes(a).split(b"\\0")[:-1]` in Python).
  */
 
 #include <ostream>
@@ -17,7 +17,6 @@
 #include <vector>
 
 class vtkDataObject;
-class vtkDataArray;
 
 namespace labelmesher
 {
@@ -27,9 +26,6 @@ namespace io
 void WriteVtu(vtkDataObject* mesh, std::ostream& out);
 void WriteLegacyVtk(vtkDataObject* mesh, std::ostream& out);
 void WriteVtp(vtkDataObject* surface, std::ostream& out);
-
-/// The strings of an array written by these writers in place of a string array.
-std::vector<std::string> DecodeStrings(vtkDataArray* bytes);
 
 } // namespace io
 } // namespace labelmesher

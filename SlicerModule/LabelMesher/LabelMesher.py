@@ -1,0 +1,259 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""3D Slicer scripted module: mesh a segmentation (chosen segments) or a labelmap
+volume into a tetrahedral (or, for one slice, triangle) mesh with LabelMesher's
+guarantees, as a model node in the input's RAS geometry.
+
+Only Slicer glue lives here; the meshing, the IJK to RAS placement and the
+quality report are in LabelMesherLib/meshing.py, which runs without Slicer.
+"""
+import logging
+from typing import Annotated, Optional
+
+import numpy as np
+import qt
+import slicer
+import vtk
+from slicer.ScriptedLoadableModule import (ScriptedLoadableModule, ScriptedLoadableModuleLogic,
+                                           ScriptedLoadableModuleTest, ScriptedLoadableModuleWidget)
+from slicer.parameterNodeWrapper import WithinRange, parameterNodeWrapper
+from slicer.util import VTKObservationMixin
+
+from LabelMesherLib import Material, MeshingCancelled, MeshingError, MeshingParameters, mesh_labels, summary_text
+
+
+class LabelMesher(ScriptedLoadableModule):
+    def __init__(self, parent):
+        ScriptedLoadableModule.__init__(self, parent)
+        self.parent.title = "LabelMesher"
+        self.parent.categories = ["Segmentation"]
+        self.parent.dependencies = []
+        self.parent.contributors = ["The LabelMesher developers"]
+        self.parent.helpText = (
+            "Meshes the chosen segments (or a labelmap volume) into tetrahedra whose dihedral angles are "
+            "at least 30 degrees (after decimation: at least the angle bound), within the two distance "
+            "bounds of the segments (in voxels of the smallest spacing), with the topology of every "
+            "segment kept. The report below the Apply button gives the measured values.")
+        self.parent.acknowledgementText = (
+            "Octree refinement and decimation after J. Xu, PhD dissertation, Old Dominion University, 2020.")
+
+
+@parameterNodeWrapper
+class LabelMesherParameterNode:
+    """Distances in voxels of the smallest spacing, the angle in degrees."""
+    inputSegmentation: slicer.vtkMRMLSegmentationNode
+    inputLabelmap: slicer.vtkMRMLLabelMapVolumeNode
+    outputModel: slicer.vtkMRMLModelNode
+    imageToMeshDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
+    meshToImageDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
+    decimate: bool = True
+    minimumAngle: Annotated[float, WithinRange(1.0, 30.0)] = 15.0
+    includeBackground: bool = False
+
+
+class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
+    def __init__(self, parent=None):
+        ScriptedLoadableModuleWidget.__init__(self, parent)
+        VTKObservationMixin.__init__(self)
+        self.logic = None
+        self._parameterNode = None
+        self._parameterNodeGuiTag = None
+        self._running = False
+        self._cancelRequested = False
+
+    def setup(self):
+        ScriptedLoadableModuleWidget.setup(self)
+        uiWidget = slicer.util.loadUI(self.resourcePath("UI/LabelMesher.ui"))
+        self.layout.addWidget(uiWidget)
+        self.ui = slicer.util.childWidgetVariables(uiWidget)
+        uiWidget.setMRMLScene(slicer.mrmlScene)
+        self.logic = LabelMesherLogic()
+        self.addObserver(slicer.mrmlScene, slicer.mrmlScene.StartCloseEvent, self.onSceneStartClose)
+        self.addObserver(slicer.mrmlScene, slicer.mrmlScene.EndCloseEvent, self.onSceneEndClose)
+        self.ui.applyButton.connect("clicked(bool)", self.onApplyButton)
+        self.ui.inputSegmentationSelector.connect("currentNodeChanged(vtkMRMLNode*)", self.onSegmentationChanged)
+        self.initializeParameterNode()
+
+    def cleanup(self):
+        self.removeObservers()
+
+    def enter(self):
+        self.initializeParameterNode()
+
+    def exit(self):
+        if self._parameterNode:
+            self._parameterNode.disconnectGui(self._parameterNodeGuiTag)
+            self._parameterNodeGuiTag = None
+
+    def onSceneStartClose(self, caller, event):
+        self.setParameterNode(None)
+
+    def onSceneEndClose(self, caller, event):
+        if self.parent.isEntered:
+            self.initializeParameterNode()
+
+    def initializeParameterNode(self):
+        self.setParameterNode(self.logic.getParameterNode())
+        if not self._parameterNode.inputSegmentation and not self._parameterNode.inputLabelmap:
+            self._parameterNode.inputSegmentation = slicer.mrmlScene.GetFirstNodeByClass("vtkMRMLSegmentationNode")
+
+    def setParameterNode(self, inputParameterNode: Optional[LabelMesherParameterNode]):
+        if self._parameterNode:
+            self._parameterNode.disconnectGui(self._parameterNodeGuiTag)
+        self._parameterNode = inputParameterNode
+        if self._parameterNode:
+            self._parameterNodeGuiTag = self._parameterNode.connectGui(self.ui)
+            self.onSegmentationChanged(self._parameterNode.inputSegmentation)
+
+    def onSegmentationChanged(self, node):
+        """Lists the segmentation's segments, all checked."""
+        self.ui.segmentsList.clear()
+        if not node:
+            return
+        segmentation = node.GetSegmentation()
+        for index in range(segmentation.GetNumberOfSegments()):
+            segmentId = segmentation.GetNthSegmentID(index)
+            item = qt.QListWidgetItem(segmentation.GetSegment(segmentId).GetName())
+            item.setData(qt.Qt.UserRole, segmentId)
+            item.setFlags(item.flags() | qt.Qt.ItemIsUserCheckable)
+            item.setCheckState(qt.Qt.Checked)
+            self.ui.segmentsList.addItem(item)
+
+    def checkedSegmentIds(self):
+        items = (self.ui.segmentsList.item(i) for i in range(self.ui.segmentsList.count))
+        return [item.data(qt.Qt.UserRole) for item in items if item.checkState() == qt.Qt.Checked]
+
+    def onApplyButton(self):
+        # Apply becomes Cancel while meshing: the filters stop at their next progress report.
+        if self._running:
+            self._cancelRequested = True
+            return
+        self._running, self._cancelRequested = True, False
+        self.ui.applyButton.text = "Cancel"
+        self.ui.progressBar.value = 0
+        self.ui.summaryText.plainText = ""
+
+        def progress(fraction, text):
+            self.ui.progressBar.value = int(round(100 * fraction))
+            self.ui.progressBar.format = f"{text} %p%" if text else "%p%"
+            slicer.app.processEvents()  # keeps the GUI (and the Cancel button) alive
+
+        try:
+            p = self._parameterNode
+            report = self.logic.process(
+                p.inputSegmentation, self.checkedSegmentIds(), p.inputLabelmap, p.outputModel,
+                MeshingParameters(p.imageToMeshDistance, p.meshToImageDistance, p.decimate, p.minimumAngle,
+                                  p.includeBackground),
+                progress, lambda: self._cancelRequested)
+            self.ui.summaryText.plainText = summary_text(report)
+        except MeshingCancelled:
+            self.ui.summaryText.plainText = "Cancelled: no mesh was made."
+        except MeshingError as e:
+            slicer.util.errorDisplay(f"LabelMesher: {e}")
+        finally:
+            self._running = False
+            self.ui.applyButton.text = "Apply"
+
+
+class LabelMesherLogic(ScriptedLoadableModuleLogic):
+    """Slicer nodes to arrays and back; the meshing itself is LabelMesherLib's."""
+
+    def getParameterNode(self):
+        return LabelMesherParameterNode(super().getParameterNode())
+
+    def labelArrayFromSegmentation(self, segmentationNode, segmentIds):
+        """(labels [k, j, i], IJK to RAS, materials): segment i of segmentIds gets label i + 1."""
+        if not segmentIds:
+            raise MeshingError("no segment is chosen")
+        labelmap = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLLabelMapVolumeNode")
+        try:
+            ids = vtk.vtkStringArray()
+            for segmentId in segmentIds:
+                ids.InsertNextValue(segmentId)
+            slicer.modules.segmentations.logic().ExportSegmentsToLabelmapNode(segmentationNode, ids, labelmap)
+            labels, matrix = self.labelArrayFromVolume(labelmap)
+        finally:
+            slicer.mrmlScene.RemoveNode(labelmap)
+        segmentation = segmentationNode.GetSegmentation()
+        materials = [Material(index + 1, segmentation.GetSegment(segmentId).GetName(),
+                              tuple(segmentation.GetSegment(segmentId).GetColor()))
+                     for index, segmentId in enumerate(segmentIds)]
+        return labels, matrix, materials
+
+    def labelArrayFromVolume(self, volumeNode):
+        matrix = vtk.vtkMatrix4x4()
+        volumeNode.GetIJKToRASMatrix(matrix)
+        if volumeNode.GetParentTransformNode():
+            raise MeshingError("the volume is under a transform: harden the transform first")
+        return slicer.util.arrayFromVolume(volumeNode).copy(), slicer.util.arrayFromVTKMatrix(matrix)
+
+    def process(self, segmentationNode, segmentIds, labelmapNode, outputModel, parameters,
+                progress=None, shouldAbort=None):
+        if segmentationNode:
+            labels, matrix, materials = self.labelArrayFromSegmentation(segmentationNode, segmentIds)
+        elif labelmapNode:
+            labels, matrix = self.labelArrayFromVolume(labelmapNode)
+            materials = self.materialsFromColorTable(labelmapNode, labels)
+        else:
+            raise MeshingError("choose a segmentation or a labelmap volume")
+        result = mesh_labels(labels, matrix, materials, parameters, progress=progress, should_abort=shouldAbort)
+        if not outputModel:
+            outputModel = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode", "LabelMesher mesh")
+        outputModel.SetAndObserveMesh(result.mesh)
+        outputModel.CreateDefaultDisplayNodes()
+        display = outputModel.GetDisplayNode()
+        display.SetActiveScalarName("Material")
+        display.SetScalarVisibility(True)
+        display.SetAndObserveColorNodeID(self.materialColorNode(materials).GetID())
+        display.SetScalarRangeFlag(slicer.vtkMRMLDisplayNode.UseColorNodeScalarRange)
+        logging.info("LabelMesher: %s", summary_text(result.report).replace("\n", "; "))
+        return result.report
+
+    def materialsFromColorTable(self, labelmapNode, labels):
+        colors = labelmapNode.GetDisplayNode().GetColorNode() if labelmapNode.GetDisplayNode() else None
+        materials = []
+        for label in (int(v) for v in np.unique(labels) if v):
+            rgba = [0.0, 0.0, 0.0, 0.0]
+            if colors and colors.GetColor(label, rgba):
+                materials.append(Material(label, colors.GetColorName(label), tuple(rgba[:3])))
+            else:
+                materials.append(Material(label, f"label_{label}"))
+        return materials
+
+    def materialColorNode(self, materials):
+        node = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLColorTableNode", "LabelMesher materials")
+        node.SetTypeToUser()
+        node.SetNumberOfColors(max([m.label for m in materials] + [0]) + 1)
+        node.SetColor(0, "background", 0.0, 0.0, 0.0, 0.0)
+        for m in materials:
+            r, g, b = m.color if m.color is not None else (0.5, 0.5, 0.5)
+            node.SetColor(m.label, m.name, r, g, b, 1.0)
+        return node
+
+
+class LabelMesherTest(ScriptedLoadableModuleTest):
+    """Runs inside Slicer only (Slicer's self-test); CI runs LabelMesherLib's tests without Slicer."""
+
+    def setUp(self):
+        slicer.mrmlScene.Clear()
+
+    def runTest(self):
+        self.setUp()
+        self.test_TwoSegmentsInAnObliqueVolume()
+
+    def test_TwoSegmentsInAnObliqueVolume(self):
+        labels = np.zeros((16, 18, 20), dtype=np.uint8)
+        labels[3:13, 4:14, 5:15] = 1
+        labels[6:10, 7:11, 8:12] = 2
+        volume = slicer.util.addVolumeFromArray(labels, nodeClassName="vtkMRMLLabelMapVolumeNode")
+        volume.SetSpacing(0.5, 0.6, 0.7)
+        volume.SetIJKToRASDirections([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+        segmentation = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLSegmentationNode")
+        slicer.modules.segmentations.logic().ImportLabelmapToSegmentationNode(volume, segmentation)
+        ids = [segmentation.GetSegmentation().GetNthSegmentID(i) for i in range(2)]
+        model = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode")
+        report = LabelMesherLogic().process(segmentation, ids, None, model, MeshingParameters())
+        self.assertGreater(model.GetMesh().GetNumberOfCells(), 0)
+        self.assertGreaterEqual(report["quality"]["minimum_angle_degrees"], 15.0)
+        self.assertTrue(report["fidelity"]["bounds_certified"])
+        self.assertTrue(report["topology"]["all_match"])
+        self.delayDisplay("LabelMesher test passed")

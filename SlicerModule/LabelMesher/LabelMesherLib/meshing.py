@@ -1,0 +1,318 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The LabelMesher module's logic without 3D Slicer: a label array, its IJK to RAS
+placement and the segments' names and colours in; the filters (the wrapped VTK
+module ``labelmesher``) run; a tetrahedral/triangle mesh in RAS and a quality
+report out. Slicer's own classes appear only in ``LabelMesher.py``; this file
+needs numpy and VTK's Python bindings, so it is tested with Debian's Python.
+
+Placement: Slicer's IJK to RAS matrix is M = [R diag(s) | o] for a volume with
+spacing s, direction R and origin o. The mesh is made in the image's own frame
+(spacing s, origin 0, axis-aligned, so the filters' distance bounds are in
+voxels of the smallest spacing and their angle bounds hold as proved), then
+every point p is placed at R p + o. R is orthogonal, so angles, distances and
+topology are unchanged; a reflection (det R < 0, common for LPS files) would
+turn every tetrahedron inside out, so two of its vertices are swapped back. A
+sheared matrix has no such rigid placement and is refused.
+"""
+from dataclasses import dataclass, field
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints, vtkStringArray
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
+
+import labelmesher
+
+# Field-data arrays of the materials, as the I/O layer writes them (Filters/IO/MaterialTable.h).
+MATERIAL_LABEL, MATERIAL_NAME, MATERIAL_COLOR = "MaterialLabel", "MaterialName", "MaterialColor"
+
+
+class MeshingError(Exception):
+    """Input the filters cannot mesh, or a filter's error; one plain sentence."""
+
+
+class MeshingCancelled(Exception):
+    """The user stopped the run (should_abort returned True)."""
+
+
+@dataclass
+class Material:
+    label: int
+    name: str
+    color: Optional[Tuple[float, float, float]] = None  # RGB in [0, 1]
+
+
+@dataclass
+class MeshingParameters:
+    """Distances in voxels of the smallest spacing; angle in degrees."""
+    image_to_mesh_distance: float = 2.0  # every labelled voxel centre lies within this of its material
+    mesh_to_image_distance: float = 2.0  # every point of the mesh lies within this of its label's voxels
+    decimate: bool = True
+    minimum_angle: float = 15.0  # the decimator keeps every angle at least this (<= 30 in 3D, 45 in 2D)
+    include_background: bool = False
+
+    def validate(self, dimension: int):
+        for name in ("image_to_mesh_distance", "mesh_to_image_distance"):
+            value = getattr(self, name)
+            if not (0.0 <= value <= 64.0):
+                raise MeshingError(f"{name.replace('_', ' ')} must be within 0..64 voxels, not {value}")
+        limit = 30.0 if dimension == 3 else 45.0
+        if self.decimate and not (0.0 < self.minimum_angle <= limit):
+            raise MeshingError(
+                f"minimum angle must be within (0, {limit:g}] degrees for a {dimension}D image, not {self.minimum_angle}")
+
+
+@dataclass
+class Placement:
+    spacing: np.ndarray    # (3,) mm
+    rotation: np.ndarray   # (3, 3), orthogonal
+    origin: np.ndarray     # (3,) RAS of voxel (0, 0, 0)
+
+    @property
+    def reflects(self) -> bool:
+        return bool(np.linalg.det(self.rotation) < 0.0)
+
+
+@dataclass
+class MeshingResult:
+    mesh: vtkUnstructuredGrid          # in RAS, cell data "Material"
+    interfaces: object                 # vtkPolyData of the interfaces (port 1), in RAS
+    report: Dict = field(default_factory=dict)
+
+
+def placement_from_ijk_to_ras(ijk_to_ras, tolerance: float = 1e-6) -> Placement:
+    """Splits a 4x4 IJK to RAS matrix into spacing, rotation and origin."""
+    m = np.asarray(ijk_to_ras, dtype=float).reshape(4, 4)
+    if not np.all(np.isfinite(m)) or np.any(m[3] != (0.0, 0.0, 0.0, 1.0)):
+        raise MeshingError("the IJK to RAS matrix is not an affine placement")
+    columns = m[:3, :3]
+    # The column norms give the spacing up to rounding (0.8 comes back as 0.7999999999999999);
+    # 12 digits recover the volume's own spacing, so the mesh equals the one made from it.
+    spacing = np.array([float(f"{s:.12g}") for s in np.linalg.norm(columns, axis=0)])
+    if np.any(spacing <= 0.0):
+        raise MeshingError(f"the volume has zero spacing ({spacing.tolist()})")
+    rotation = columns / spacing
+    if np.max(np.abs(rotation.T @ rotation - np.eye(3))) > tolerance:
+        raise MeshingError("the volume's IJK to RAS matrix is sheared: its axes are not perpendicular, "
+                           "so no mesh in RAS can keep the proven angles; resample the volume first")
+    return Placement(spacing=spacing, rotation=rotation, origin=m[:3, 3].copy())
+
+
+def label_image(labels_kji: np.ndarray, spacing: Sequence[float], selected: Optional[Sequence[int]] = None):
+    """vtkImageData of the labels in the image's own frame. ``labels_kji`` is
+    indexed [k, j, i] (Slicer's arrayFromVolume); labels not in ``selected`` become
+    background."""
+    labels = np.asarray(labels_kji)
+    if labels.ndim == 2:
+        labels = labels[np.newaxis]
+    if labels.ndim != 3 or labels.size == 0:
+        raise MeshingError(f"the label array must be 2D or 3D and non-empty, not of shape {labels.shape}")
+    if not np.issubdtype(labels.dtype, np.integer):
+        raise MeshingError(f"labels must be integers, not {labels.dtype}")
+    if labels.min() < 0 or labels.max() > np.iinfo(np.int32).max:
+        raise MeshingError("labels must lie within 0..2147483647")
+    labels = labels.astype(np.int32)
+    if selected is not None:
+        labels = np.where(np.isin(labels, np.asarray(list(selected), dtype=np.int32)), labels, 0).astype(np.int32)
+    if not labels.any():
+        raise MeshingError("no labelled voxel: every voxel is background (or no segment is selected)")
+    image = vtkImageData()
+    image.SetDimensions(labels.shape[2], labels.shape[1], labels.shape[0])
+    image.SetSpacing(*[float(s) for s in spacing])
+    scalars = numpy_to_vtk(labels.ravel(order="C"), deep=1)
+    scalars.SetName("Labels")
+    image.GetPointData().SetScalars(scalars)
+    return image
+
+
+def _watch(algorithm, start: float, share: float, progress, should_abort, errors: List[str]):
+    """Forwards the filter's progress to progress(fraction, text) and asks it to
+    stop (AbortExecute) as soon as should_abort() says so."""
+    def on_progress(obj, _event):
+        if progress:
+            progress(start + share * obj.GetProgress(), obj.GetProgressText() or "")
+        if should_abort and should_abort():
+            obj.SetAbortExecute(1)
+
+    @calldata_type(VTK_STRING)
+    def on_error(_obj, _event, message):
+        # VTK's message is "ERROR: In FILE, line N\nvtkClass (0x...): text": keep the text.
+        errors.append(str(message).strip().splitlines()[-1].split("): ", 1)[-1])
+
+    algorithm.AddObserver(vtkCommand.ProgressEvent, on_progress)
+    algorithm.AddObserver(vtkCommand.ErrorEvent, on_error)
+
+
+def _update(algorithm, errors: List[str], should_abort):
+    # The filters report bad input as an error event and an empty output (never a crash).
+    algorithm.Update()
+    if algorithm.GetAbortExecute() or (should_abort and should_abort()):
+        raise MeshingCancelled()
+    if errors:
+        raise MeshingError(f"{algorithm.GetClassName()}: {errors[0]}")
+
+
+def place(data, placement: Placement):
+    """Moves data's points from the image frame into RAS, in place."""
+    points = data.GetPoints()
+    if points is None or points.GetNumberOfPoints() == 0:
+        return
+    xyz = vtk_to_numpy(points.GetData()).astype(float)
+    ras = xyz @ placement.rotation.T + placement.origin
+    placed = vtkPoints()
+    placed.SetDataTypeToDouble()
+    placed.SetData(numpy_to_vtk(np.ascontiguousarray(ras), deep=1))
+    data.SetPoints(placed)
+    if placement.reflects and isinstance(data, vtkUnstructuredGrid):
+        _reorient_tetrahedra(data)
+
+
+def _reorient_tetrahedra(grid: vtkUnstructuredGrid):
+    # A reflection makes every tetrahedron's signed volume negative: swap vertices 1 and 2.
+    cells = grid.GetCells()
+    offsets = vtk_to_numpy(cells.GetOffsetsArray())
+    connectivity = vtk_to_numpy(cells.GetConnectivityArray()).copy()
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    starts = offsets[:-1][(types == 10) & (np.diff(offsets) == 4)]
+    connectivity[starts + 1], connectivity[starts + 2] = connectivity[starts + 2].copy(), connectivity[starts + 1].copy()
+    cells.SetData(numpy_to_vtk(offsets, deep=1), numpy_to_vtk(connectivity, deep=1))
+    grid.SetCells(grid.GetCellTypesArray(), cells)
+
+
+def attach_materials(mesh, materials: Sequence[Material]):
+    """MaterialLabel / MaterialName / MaterialColor, as the CLI's files carry them."""
+    labels, names, colors = vtkIntArray(), vtkStringArray(), vtkDoubleArray()
+    labels.SetName(MATERIAL_LABEL)
+    names.SetName(MATERIAL_NAME)
+    colors.SetName(MATERIAL_COLOR)
+    colors.SetNumberOfComponents(3)
+    for m in sorted(materials, key=lambda m: m.label):
+        labels.InsertNextValue(int(m.label))
+        names.InsertNextValue(m.name)
+        colors.InsertNextTuple3(*(m.color if m.color is not None else (-1.0, -1.0, -1.0)))
+    for array in (labels, names, colors):
+        mesh.GetFieldData().AddArray(array)
+
+
+def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
+                parameters: MeshingParameters = None, selected: Optional[Sequence[int]] = None,
+                progress: Optional[Callable[[float, str], None]] = None,
+                should_abort: Optional[Callable[[], bool]] = None) -> MeshingResult:
+    """Meshes a label array placed by ijk_to_ras: vtkLabelOctreeMesher, then
+    (parameters.decimate) vtkMeshDecimator; returns the mesh in RAS and its report.
+    Raises MeshingError (bad input, a filter's error) or MeshingCancelled."""
+    parameters = parameters or MeshingParameters()
+    placement = placement_from_ijk_to_ras(ijk_to_ras)
+    image = label_image(labels_kji, placement.spacing, selected)
+    dims = image.GetDimensions()
+    dimension = 2 if 1 in dims else 3
+    parameters.validate(dimension)
+
+    errors: List[str] = []
+    mesher = labelmesher.vtkLabelOctreeMesher()
+    mesher.SetInputData(image)
+    mesher.SetImageToMeshDistance(parameters.image_to_mesh_distance)
+    mesher.SetMeshToImageDistance(parameters.mesh_to_image_distance)
+    # The decimator needs the background cells (the mesh must fill its box); it drops them itself.
+    mesher.SetIncludeBackground(parameters.include_background or parameters.decimate)
+    mesher.SetMeasureOutput(not parameters.decimate)
+    share = 0.5 if parameters.decimate else 1.0
+    _watch(mesher, 0.0, share, progress, should_abort, errors)
+    _update(mesher, errors, should_abort)
+    last = mesher
+    if parameters.decimate:
+        decimator = labelmesher.vtkMeshDecimator()
+        decimator.SetInputConnection(0, mesher.GetOutputPort(0))
+        decimator.SetInputData(1, image)
+        decimator.SetMinimumAngle(parameters.minimum_angle)
+        decimator.SetIncludeBackground(parameters.include_background)
+        decimator.SetMeasureOutput(True)
+        _watch(decimator, share, 1.0 - share, progress, should_abort, errors)
+        _update(decimator, errors, should_abort)
+        last = decimator
+
+    mesh = vtkUnstructuredGrid()
+    mesh.DeepCopy(last.GetOutputDataObject(0))
+    interfaces = last.GetOutputDataObject(1).NewInstance()
+    interfaces.DeepCopy(last.GetOutputDataObject(1))
+    place(mesh, placement)
+    place(interfaces, placement)
+    present = set(int(v) for v in np.unique(vtk_to_numpy(mesh.GetCellData().GetArray("Material"))))
+    known = {m.label: m for m in materials}
+    table = [known.get(label, Material(label, f"label_{label}")) for label in sorted(present)]
+    attach_materials(mesh, table)
+    report = quality_report(mesh, dims, placement, parameters)
+    if progress:
+        progress(1.0, "done")
+    return MeshingResult(mesh=mesh, interfaces=interfaces, report=report)
+
+
+def _field(mesh, name, tuple_index=0):
+    array = mesh.GetFieldData().GetArray(name)
+    if array is None or tuple_index >= array.GetNumberOfTuples():
+        return None
+    return float(array.GetComponent(tuple_index, 0))
+
+
+def quality_report(mesh, dims, placement: Placement, parameters: MeshingParameters) -> Dict:
+    """What the filters measured, under the keys of `labelmesher mesh --report`'s JSON."""
+    dimension = 2 if 1 in dims else 3
+    materials = vtk_to_numpy(mesh.GetCellData().GetArray("Material"))
+    names = mesh.GetFieldData().GetAbstractArray(MATERIAL_NAME)
+    labels = mesh.GetFieldData().GetArray(MATERIAL_LABEL)
+    name_of = {int(labels.GetValue(i)): names.GetValue(i) for i in range(labels.GetNumberOfTuples())}
+    fd = mesh.GetFieldData()
+    topology = []
+    topo_materials = fd.GetArray("TopologyMaterial")
+    for t in range(topo_materials.GetNumberOfTuples() if topo_materials else 0):
+        topology.append({
+            "material": int(topo_materials.GetComponent(t, 0)),
+            "image_components": int(_field(mesh, "ImageComponents", t)),
+            "image_euler_characteristic": int(_field(mesh, "ImageEulerCharacteristic", t)),
+            "mesh_components": int(_field(mesh, "MeshComponents", t)),
+            "mesh_euler_characteristic": int(_field(mesh, "MeshEulerCharacteristic", t)),
+            "matches": bool(_field(mesh, "TopologyMatches", t)),
+        })
+    decimation = None
+    if fd.GetArray("Merges") is not None:
+        decimation = {key: _field(mesh, array) for key, array in (
+            ("minimum_angle_bound_degrees", "AngleBound"), ("cells_before", "CellsBefore"),
+            ("cells_after", "CellsAfter"), ("merges", "Merges"))}
+    return {
+        "image": {"dimensions": list(dims), "spacing": placement.spacing.tolist(),
+                  "ijk_to_ras_rotation": placement.rotation.tolist(), "origin_ras": placement.origin.tolist()},
+        "parameters": {"image_to_mesh": parameters.image_to_mesh_distance,
+                       "mesh_to_image": parameters.mesh_to_image_distance,
+                       "include_background": parameters.include_background,
+                       "distance_unit": _field(mesh, "VoxelSize")},
+        "mesh": {"dimension": dimension, "cell_type": "tetra" if dimension == 3 else "triangle",
+                 "points": mesh.GetNumberOfPoints(), "cells": mesh.GetNumberOfCells(),
+                 "cells_per_material": {str(int(m)): int(n) for m, n in zip(*np.unique(materials, return_counts=True))}},
+        "material_table": [{"label": label, "name": name} for label, name in sorted(name_of.items())],
+        "decimation": decimation,
+        "quality": {"angle_kind": "dihedral" if dimension == 3 else "planar",
+                    "angle_bound_degrees": (parameters.minimum_angle if parameters.decimate
+                                            else (30.0 if dimension == 3 else 45.0)),
+                    "minimum_angle_degrees": _field(mesh, "MinimumAngle"),
+                    "maximum_angle_degrees": _field(mesh, "MaximumAngle"),
+                    "inverted_cells": _field(mesh, "InvertedCells")},
+        "fidelity": {"unit": "voxels of the smallest spacing",
+                     "image_to_mesh": _field(mesh, "MeasuredImageToMeshDistance"),
+                     "mesh_to_image": _field(mesh, "MeasuredMeshToImageDistance"),
+                     "bounds_certified": _field(mesh, "HausdorffBoundsCertified") == 1.0},
+        "topology": {"all_match": bool(topology) and all(t["matches"] for t in topology), "materials": topology},
+    }
+
+
+def summary_text(report: Dict) -> str:
+    """A few lines for the module's panel."""
+    q, f, m = report["quality"], report["fidelity"], report["mesh"]
+    lines = [f"{m['cells']} {'tetrahedra' if m['dimension'] == 3 else 'triangles'}, {m['points']} points",
+             f"smallest {q['angle_kind']} angle {q['minimum_angle_degrees']:.2f} deg "
+             f"(bound {q['angle_bound_degrees']:g}), inverted cells {int(q['inverted_cells'] or 0)}",
+             f"distances (voxels): image to mesh {f['image_to_mesh']:.3f}, mesh to image {f['mesh_to_image']:.3f}, "
+             f"bounds {'certified' if f['bounds_certified'] else 'NOT certified'}",
+             f"topology of every material {'matches' if report['topology']['all_match'] else 'DOES NOT match'}"]
+    return "\n".join(lines)

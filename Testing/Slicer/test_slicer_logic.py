@@ -1,0 +1,190 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The 3D Slicer module's logic (SlicerModule/LabelMesher/LabelMesherLib), run
+without Slicer: Debian's Python, the wrapped filters, shared real images.
+
+usage: python3 -m unittest test_slicer_logic   (PYTHONPATH: the wrapped module,
+SlicerModule/LabelMesher and Testing/Support; LABELMESHER_DATA: ../shared/data)
+"""
+import os
+import unittest
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from label_nrrd import read_label_nrrd
+from LabelMesherLib.meshing import (Material, MeshingCancelled, MeshingError, MeshingParameters,
+                                    mesh_labels, placement_from_ijk_to_ras)
+
+DATA = os.environ.get("LABELMESHER_DATA", os.path.join(os.path.dirname(__file__), "../../../shared/data"))
+
+
+def oblique_ijk_to_ras(spacing, origin, reflect=True):
+    """A rotation by 30 degrees about (1, 2, 2)/3, then (optionally) a mirror of the
+    k axis (volumes stored bottom-up), times the spacing: nothing in it is axis-aligned."""
+    axis = np.array([1.0, 2.0, 2.0]) / 3.0
+    a = np.radians(30.0)
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    rotation = np.eye(3) + np.sin(a) * k + (1 - np.cos(a)) * k @ k
+    if reflect:
+        rotation = rotation @ np.diag([1.0, 1.0, -1.0])
+    m = np.eye(4)
+    m[:3, :3] = rotation * np.asarray(spacing, dtype=float)
+    m[:3, 3] = origin
+    return m
+
+
+def points(mesh):
+    return vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
+
+
+def tetrahedra(mesh):
+    return vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 4)
+
+
+def check_guarantees(test, report, bound):
+    q, f = report["quality"], report["fidelity"]
+    test.assertGreaterEqual(q["minimum_angle_degrees"], bound - 1e-9)
+    test.assertEqual(q["inverted_cells"], 0)
+    test.assertTrue(f["bounds_certified"])
+    test.assertLessEqual(f["image_to_mesh"], report["parameters"]["image_to_mesh"] + 1e-9)
+    test.assertLessEqual(f["mesh_to_image"], report["parameters"]["mesh_to_image"] + 1e-9)
+    test.assertTrue(report["topology"]["all_match"], report["topology"])
+
+
+class ObliquePlacementTest(unittest.TestCase):
+    """The rat head (shared, real) meshed once in the image frame and once placed by
+    an oblique, reflecting IJK to RAS matrix with anisotropic spacing."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.labels, _ = read_label_nrrd(os.path.join(DATA, "3d/iso2mesh_rat_head.nrrd"))
+        cls.spacing = np.array([1.0, 0.8, 1.3])
+        cls.origin = np.array([-40.0, 12.5, 7.25])
+        cls.matrix = oblique_ijk_to_ras(cls.spacing, cls.origin)
+        cls.framed = mesh_labels(cls.labels, np.diag(list(cls.spacing) + [1.0]))
+        cls.placed = mesh_labels(cls.labels, cls.matrix, [Material(1, "rat head", (0.8, 0.5, 0.4))])
+
+    def test_points_are_the_framed_mesh_placed_rigidly(self):
+        rotation = self.matrix[:3, :3] / self.spacing
+        expected = points(self.framed.mesh) @ rotation.T + self.origin
+        np.testing.assert_allclose(points(self.placed.mesh), expected, atol=1e-9)
+        self.assertEqual(self.placed.mesh.GetNumberOfCells(), self.framed.mesh.GetNumberOfCells())
+
+    def test_every_tetrahedron_keeps_positive_volume_after_the_reflection(self):
+        self.assertLess(np.linalg.det(self.matrix[:3, :3]), 0.0)
+        for result in (self.framed, self.placed):
+            p = points(result.mesh)
+            t = tetrahedra(result.mesh)
+            a, b, c, d = (p[t[:, i]] for i in range(4))
+            volumes = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a)
+            self.assertTrue(np.all(volumes > 0.0), f"{np.sum(volumes <= 0)} of {len(volumes)} not positive")
+
+    def test_cells_lie_on_their_voxels_in_ras(self):
+        # Back from RAS to continuous IJK through the inverse matrix: each cell's centroid
+        # must be within the mesh-to-image bound (2 voxels) of a voxel of its label.
+        p = points(self.placed.mesh)
+        t = tetrahedra(self.placed.mesh)
+        centroids = p[t].mean(axis=1)
+        ijk = (np.linalg.inv(self.matrix) @ np.c_[centroids, np.ones(len(centroids))].T).T[:, :3]
+        nearest = np.clip(np.rint(ijk).astype(int), 0, np.array(self.labels.shape[::-1]) - 1)
+        on_label = self.labels[nearest[:, 2], nearest[:, 1], nearest[:, 0]] == 1
+        self.assertGreater(on_label.mean(), 0.95)
+        reach = 2
+        padded = np.pad(self.labels == 1, reach)
+        grown = np.zeros_like(padded)
+        for dk in range(-reach, reach + 1):
+            for dj in range(-reach, reach + 1):
+                for di in range(-reach, reach + 1):
+                    grown |= np.roll(padded, (dk, dj, di), axis=(0, 1, 2))
+        near = grown[nearest[:, 2] + reach, nearest[:, 1] + reach, nearest[:, 0] + reach]
+        self.assertTrue(np.all(near), f"{np.sum(~near)} cells far from the label")
+
+    def test_report_and_materials(self):
+        for result in (self.framed, self.placed):
+            check_guarantees(self, result.report, 15.0)
+            self.assertLess(result.report["decimation"]["cells_after"], result.report["decimation"]["cells_before"])
+        self.assertEqual(self.placed.report["material_table"], [{"label": 1, "name": "rat head"}])
+        fd = self.placed.mesh.GetFieldData()
+        self.assertEqual(fd.GetAbstractArray("MaterialName").GetValue(0), "rat head")
+        self.assertEqual(fd.GetArray("MaterialColor").GetTuple3(0), (0.8, 0.5, 0.4))
+        self.assertEqual(self.framed.report["material_table"], [{"label": 1, "name": "label_1"}])
+        bounds = self.placed.interfaces.GetBounds()
+        mesh_bounds = self.placed.mesh.GetBounds()
+        np.testing.assert_allclose(bounds, mesh_bounds, atol=1e-9)  # interfaces placed with the mesh
+
+
+class SelectedSegmentsTest(unittest.TestCase):
+    """TotalSegmentator's output (shared, real): three chosen segments, with names and colours."""
+
+    def test_only_the_chosen_segments_are_meshed_with_their_names(self):
+        labels, spacing = read_label_nrrd(os.path.join(DATA, "3d/totalseg_example_seg.nrrd"))
+        present = [int(v) for v in np.unique(labels) if v]
+        chosen = present[:3]
+        materials = [Material(v, f"segment {v}", (v / 255.0, 0.5, 0.25)) for v in present]
+        matrix = oblique_ijk_to_ras(spacing, (10.0, -20.0, 30.0), reflect=False)
+        result = mesh_labels(labels, matrix, materials, MeshingParameters(minimum_angle=20.0), selected=chosen)
+        check_guarantees(self, result.report, 20.0)
+        self.assertEqual(sorted(int(m) for m in result.report["mesh"]["cells_per_material"]), chosen)
+        self.assertEqual([m["name"] for m in result.report["material_table"]], [f"segment {v}" for v in chosen])
+
+
+class SliceTest(unittest.TestCase):
+    """A 2D label image (shared, real), one slice placed obliquely."""
+
+    def test_slice_meshes_with_the_2d_bound(self):
+        labels, spacing = read_label_nrrd(os.path.join(DATA, "2d/digimouse_sagittal.nrrd"))
+        result = mesh_labels(labels, oblique_ijk_to_ras(spacing[:2].tolist() + [0.2], (1.0, 2.0, 3.0)),
+                             parameters=MeshingParameters(minimum_angle=30.0))
+        self.assertEqual(result.report["mesh"]["cell_type"], "triangle")
+        check_guarantees(self, result.report, 30.0)
+        # The triangles lie in the slice's plane: normal = the placed k axis.
+        normal = oblique_ijk_to_ras((1, 1, 1), (0, 0, 0))[:3, 2]
+        offsets = (points(result.mesh) - (1.0, 2.0, 3.0)) @ normal
+        self.assertLess(np.max(np.abs(offsets)), 1e-9)
+
+
+class ProgressCancelAndErrorsTest(unittest.TestCase):
+
+    def setUp(self):
+        self.labels = np.zeros((20, 20, 20), dtype=np.uint8)
+        self.labels[4:16, 5:15, 3:17] = 1
+        self.labels[8:12, 8:12, 8:12] = 2
+
+    def test_progress_then_cancel_then_a_new_run(self):
+        seen = []
+        result = mesh_labels(self.labels, np.eye(4), progress=lambda f, text: seen.append((f, text)))
+        fractions = [f for f, _ in seen]
+        self.assertEqual(fractions, sorted(fractions))
+        self.assertEqual(fractions[-1], 1.0)
+        self.assertTrue(any(0.0 < f < 0.5 for f in fractions) and any(0.5 < f < 1.0 for f in fractions))
+        self.assertGreater(result.mesh.GetNumberOfCells(), 0)
+
+        asked = []
+        with self.assertRaises(MeshingCancelled):
+            mesh_labels(self.labels, np.eye(4), progress=lambda f, text: asked.append(f),
+                        should_abort=lambda: any(f > 0.0 for f in asked))
+        self.assertTrue(max(asked) < 0.5, "cancelled within the mesher")
+        again = mesh_labels(self.labels, np.eye(4))
+        self.assertEqual(again.mesh.GetNumberOfCells(), result.mesh.GetNumberOfCells())
+
+    def test_bad_input_is_one_plain_error(self):
+        sheared = np.eye(4)
+        sheared[0, 1] = 0.3
+        cases = [
+            (dict(ijk_to_ras=sheared), "sheared"),
+            (dict(ijk_to_ras=np.diag([1.0, 0.0, 1.0, 1.0])), "zero spacing"),
+            (dict(ijk_to_ras=np.eye(4), selected=[7]), "no labelled voxel"),
+            (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(minimum_angle=31.0)), "minimum angle"),
+            (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(image_to_mesh_distance=-1.0)), "0..64"),
+        ]
+        for kwargs, fragment in cases:
+            with self.subTest(fragment=fragment):
+                with self.assertRaisesRegex(MeshingError, fragment):
+                    mesh_labels(self.labels, **kwargs)
+        with self.assertRaisesRegex(MeshingError, "integers"):
+            mesh_labels(self.labels.astype(float), np.eye(4))
+        self.assertTrue(placement_from_ijk_to_ras(np.eye(4)).rotation.tolist() == np.eye(3).tolist())
+
+
+if __name__ == "__main__":
+    unittest.main()

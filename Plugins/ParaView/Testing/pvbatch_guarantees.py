@@ -7,14 +7,16 @@ topology of every material, a valid curved mesh.
 
 usage: pvbatch --no-mpi pvbatch_guarantees.py PLUGIN IMAGE(.nrrd gzip/raw | .png)
 """
-import gzip
+import os
 import sys
 
-import numpy as np
 from paraview import servermanager
 from paraview.simple import LoadPlugin, PVTrivialProducer, PNGSeriesReader, UpdatePipeline
 from paraview.vtk.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../Testing/Support"))
+from label_nrrd import read_label_nrrd  # noqa: E402
 
 plugin, image_path = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -22,21 +24,14 @@ LoadPlugin(plugin, remote=False, ns=globals())
 
 def read_nrrd(path):
     """The shared volumes are gzip NRRD, which VTK's NRRD reader misreads: read
-    them here (uchar, axis-aligned, as ../shared/data/README.md says)."""
-    with open(path, "rb") as f:
-        raw = f.read()
-    head, _, body = raw.partition(b"\n\n")
-    fields = dict(line.split(": ", 1) for line in head.decode().splitlines()[1:] if ": " in line)
-    sizes = [int(s) for s in fields["sizes"].split()]
-    data = gzip.decompress(body) if fields["encoding"] == "gzip" else body
-    assert fields["type"] in ("uchar", "unsigned char", "uint8"), fields["type"]
-    spacing = [float(v.strip("()").split(",")[i]) for i, v in enumerate(fields["space directions"].split())]
+    them with the tests' numpy reader (Testing/Support/label_nrrd.py)."""
+    labels, spacing = read_label_nrrd(path)
     image = vtkImageData()
-    image.SetDimensions(*sizes)
+    image.SetDimensions(*(list(labels.shape[::-1]) + [1] * (3 - labels.ndim)))
     image.SetSpacing(*spacing)
-    labels = numpy_to_vtk(np.frombuffer(data, dtype=np.uint8).copy(), deep=1)
-    labels.SetName("Labels")
-    image.GetPointData().SetScalars(labels)
+    scalars = numpy_to_vtk(labels.ravel(), deep=1)
+    scalars.SetName("Labels")
+    image.GetPointData().SetScalars(scalars)
     producer = PVTrivialProducer()
     producer.GetClientSideObject().SetOutput(image)
     return producer

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_widgets_ParameterPanel_h
+#define labelmesher_widgets_ParameterPanel_h
+
+/**
+ * @file ParameterPanel.h
+ * A Qt5 panel for the parameters of vtkLabelOctreeMesher, vtkMeshDecimator and
+ * vtkBezierCurver: the two distance bounds (shown in voxels of the smallest
+ * spacing or in mm), the decimator's angle bound, the curver's smoothness and
+ * tension, and presets. Every value is a Q_PROPERTY with a change signal; the
+ * distance properties are always in voxels (the filters' unit), whatever the
+ * display unit. Each control's tooltip states the guarantee it sets.
+ */
+
+#include <QString>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class vtkBezierCurver;
+class vtkLabelOctreeMesher;
+class vtkMeshDecimator;
+
+namespace labelmesher
+{
+namespace widgets
+{
+
+class ParameterPanel : public QWidget
+{
+  Q_OBJECT
+  Q_PROPERTY(double imageToMeshDistance READ imageToMeshDistance WRITE setImageToMeshDistance NOTIFY imageToMeshDistanceChanged)
+  Q_PROPERTY(double meshToImageDistance READ meshToImageDistance WRITE setMeshToImageDistance NOTIFY meshToImageDistanceChanged)
+  Q_PROPERTY(DistanceUnit distanceUnit READ distanceUnit WRITE setDistanceUnit NOTIFY distanceUnitChanged)
+  Q_PROPERTY(bool decimate READ decimate WRITE setDecimate NOTIFY decimateChanged)
+  Q_PROPERTY(double minimumAngle READ minimumAngle WRITE setMinimumAngle NOTIFY minimumAngleChanged)
+  Q_PROPERTY(int smoothness READ smoothness WRITE setSmoothness NOTIFY smoothnessChanged)
+  Q_PROPERTY(double tension READ tension WRITE setTension NOTIFY tensionChanged)
+  Q_PROPERTY(Preset preset READ preset WRITE setPreset NOTIFY presetChanged)
+
+public:
+  enum class DistanceUnit { Voxels, Millimetres };
+  Q_ENUM(DistanceUnit)
+  /// Fast: coarse (3 voxels, 10 degrees); Balanced: the filters' defaults (2 voxels, 15 degrees);
+  /// Faithful: close to the image (1 voxel, 20 degrees). Custom: any value changed by hand.
+  enum class Preset { Fast, Balanced, Faithful, Custom };
+  Q_ENUM(Preset)
+
+  explicit ParameterPanel(QWidget* parent = nullptr);
+
+  /// The image the panel will mesh: its dimension (2 or 3) sets the angle limit (45 or 30 degrees)
+  /// and whether the curver's controls apply; its smallest spacing (mm) converts distances to mm.
+  void setImageGeometry(int dimension, double smallestSpacing);
+  int imageDimension() const { return this->Dimension; }
+
+  double imageToMeshDistance() const { return this->ImageToMesh; } ///< voxels of the smallest spacing
+  double meshToImageDistance() const { return this->MeshToImage; } ///< voxels of the smallest spacing
+  DistanceUnit distanceUnit() const { return this->Unit; }
+  bool decimate() const;
+  double minimumAngle() const; ///< degrees
+  int smoothness() const;      ///< 1 (C1) or 2 (C2)
+  double tension() const;      ///< dimensionless, [0, 1]
+  Preset preset() const { return this->CurrentPreset; }
+  /// The largest angle bound allowed for the image dimension (degrees).
+  double maximumAngle() const { return this->Dimension == 2 ? 45.0 : 30.0; }
+
+  /// Sets the filters' parameters (any pointer may be null). The values are always valid for
+  /// them: the setters refuse non-finite and out-of-range values, the angle is clamped to
+  /// [1, maximumAngle()] whenever the image geometry changes.
+  void applyTo(vtkLabelOctreeMesher* mesher, vtkMeshDecimator* decimator, vtkBezierCurver* curver) const;
+
+public slots:
+  void setImageToMeshDistance(double voxels);
+  void setMeshToImageDistance(double voxels);
+  void setDistanceUnit(DistanceUnit unit);
+  void setDecimate(bool on);
+  void setMinimumAngle(double degrees);
+  void setSmoothness(int continuity);
+  void setTension(double tension);
+  void setPreset(Preset preset);
+
+signals:
+  void imageToMeshDistanceChanged(double voxels);
+  void meshToImageDistanceChanged(double voxels);
+  void distanceUnitChanged(DistanceUnit unit);
+  void decimateChanged(bool on);
+  void minimumAngleChanged(double degrees);
+  void smoothnessChanged(int continuity);
+  void tensionChanged(double tension);
+  void presetChanged(Preset preset);
+  /// Any value above changed.
+  void parametersChanged();
+
+private:
+  double displayScale() const; ///< displayed value = voxels * displayScale()
+  void showDistances();
+  void onDistanceEdited();
+  void markCustom();
+
+  int Dimension = 3;
+  double SmallestSpacing = 1.0;
+  double ImageToMesh = 2.0, MeshToImage = 2.0;
+  DistanceUnit Unit = DistanceUnit::Voxels;
+  Preset CurrentPreset = Preset::Balanced;
+  bool ApplyingPreset = false;
+
+  QComboBox* PresetBox = nullptr;
+  QComboBox* UnitBox = nullptr;
+  QDoubleSpinBox* ImageToMeshBox = nullptr;
+  QDoubleSpinBox* MeshToImageBox = nullptr;
+  QCheckBox* DecimateBox = nullptr;
+  QDoubleSpinBox* AngleBox = nullptr;
+  QComboBox* SmoothnessBox = nullptr;
+  QDoubleSpinBox* TensionBox = nullptr;
+};
+
+} // namespace widgets
+} // namespace labelmesher
+
+#endif

@@ -201,30 +201,26 @@ void ParameterPanel::markCustom()
 
 void ParameterPanel::setImageToMeshDistance(double voxels)
 {
-  // Only finite values within the filters' range are taken; anything else keeps the old value.
-  if (!std::isfinite(voxels) || voxels < 0.0 || voxels > kMaximumDistance || voxels == this->ImageToMesh)
-  {
-    this->showDistances();
-    return;
-  }
-  this->ImageToMesh = voxels;
-  this->showDistances();
-  this->markCustom();
-  emit imageToMeshDistanceChanged(voxels);
-  emit parametersChanged();
+  this->setDistance(this->ImageToMesh, voxels, &ParameterPanel::imageToMeshDistanceChanged);
 }
 
 void ParameterPanel::setMeshToImageDistance(double voxels)
 {
-  if (!std::isfinite(voxels) || voxels < 0.0 || voxels > kMaximumDistance || voxels == this->MeshToImage)
+  this->setDistance(this->MeshToImage, voxels, &ParameterPanel::meshToImageDistanceChanged);
+}
+
+void ParameterPanel::setDistance(double& stored, double voxels, void (ParameterPanel::*changed)(double))
+{
+  // Only finite values within the filters' range are taken; anything else keeps the old value.
+  if (!std::isfinite(voxels) || voxels < 0.0 || voxels > kMaximumDistance || voxels == stored)
   {
     this->showDistances();
     return;
   }
-  this->MeshToImage = voxels;
+  stored = voxels;
   this->showDistances();
   this->markCustom();
-  emit meshToImageDistanceChanged(voxels);
+  emit(this->*changed)(voxels);
   emit parametersChanged();
 }
 

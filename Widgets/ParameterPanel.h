@@ -97,6 +97,8 @@ private:
   double displayScale() const; ///< displayed value = voxels * displayScale()
   void showDistances();
   void onDistanceEdited();
+  /// Stores `voxels` in `stored` and emits `changed` when it is a new valid distance.
+  void setDistance(double& stored, double voxels, void (ParameterPanel::*changed)(double));
   void markCustom();
 
   int Dimension = 3;

@@ -2,7 +2,10 @@
 // Turns a VTK object's error and warning events into one plain line instead of VTK's log records.
 #include "VTKMessages.h"
 
+#include "vtkNew.h"
 #include "vtkObject.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 
 #include <algorithm>
 
@@ -25,6 +28,24 @@ VTKMessages::VTKMessages(vtkObject* object, unsigned long event)
     self->FirstMessage = text.empty() ? "unknown VTK error" : text;
   });
   object->AddObserver(event, this->Command);
+}
+
+namespace
+{
+class SilentOutputWindow : public vtkOutputWindow
+{
+public:
+  static SilentOutputWindow* New();
+  vtkTypeMacro(SilentOutputWindow, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+};
+vtkStandardNewMacro(SilentOutputWindow);
+} // namespace
+
+void SilenceVTKOutputWindow()
+{
+  vtkNew<SilentOutputWindow> silent;
+  vtkOutputWindow::SetInstance(silent); // keeps its own reference
 }
 
 } // namespace labelmesher_cli

@@ -35,6 +35,11 @@ private:
   vtkNew<vtkCallbackCommand> Command;
 };
 
+/// Replaces VTK's output window by one that drops everything: VTK's log records
+/// (file, line, object address, colours) never reach the user; the errors and
+/// warnings that matter are caught by VTKMessages and reported as one line.
+void SilenceVTKOutputWindow();
+
 } // namespace labelmesher_cli
 
 #endif

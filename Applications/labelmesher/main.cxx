@@ -27,8 +27,6 @@
 #include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
-#include "vtkOutputWindow.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -265,22 +263,9 @@ int Run(const Arguments& args)
 
 } // namespace
 
-/// VTK's log records (file, line, object address, colours) never reach the
-/// terminal: every filter's and reader's errors are caught by VTKMessages and
-/// reported as one line; what nobody observes is dropped here.
-class SilentOutputWindow : public vtkOutputWindow
-{
-public:
-  static SilentOutputWindow* New();
-  vtkTypeMacro(SilentOutputWindow, vtkOutputWindow);
-  void DisplayText(const char*) override {}
-};
-vtkStandardNewMacro(SilentOutputWindow);
-
 int main(int argc, char* argv[])
 {
-  vtkNew<SilentOutputWindow> silent;
-  vtkOutputWindow::SetInstance(silent);
+  SilenceVTKOutputWindow();
   itk::Object::GlobalWarningDisplayOff(); // ITK's warnings; its errors arrive as exceptions
   Arguments args;
   try

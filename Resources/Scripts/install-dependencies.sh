@@ -11,7 +11,7 @@ packages=(
   libinsighttoolkit5-dev libgdcm-tools # ITK 5.2 image readers (NRRD, NIfTI, MetaImage); gdcm tools silence ITK's config
   libeigen3-dev
   zlib1g-dev                           # the CLI's PNG structure check
-  qtbase5-dev
+  qtbase5-dev libvtk9-qt-dev          # Qt5 widgets and the desktop viewer (QVTKOpenGLNativeWidget)
   libp4est-dev mpi-default-dev        # the octree (p4est 2.2, GPL-2.0-or-later) and the MPI it is built against
   libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
   libcgal-dev                          # baseline comparisons in the benchmarks

@@ -1,0 +1,393 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "MainWindow.h"
+
+#include "AngleHistogram.h"
+#include "Arguments.h"
+#include "ImageReader.h"
+#include "MeshView.h"
+#include "ParameterPanel.h"
+
+#include "MeshFiles.h"
+#include "SafeFile.h"
+
+#include "vtkImageData.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <QAction>
+#include <QBuffer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace labelmesher
+{
+namespace gui
+{
+namespace
+{
+constexpr int kProgressSteps = 1000;
+}
+
+MainWindow::MainWindow(QWidget* parent)
+  : QMainWindow(parent)
+{
+  this->setWindowTitle(tr("LabelMesher"));
+  this->Panel = new widgets::ParameterPanel(this);
+  this->MeshButton = new QPushButton(tr("Mesh"), this);
+  this->MeshButton->setObjectName("mesh");
+  this->MeshButton->setToolTip(tr("Mesh the open image with these parameters (in the background)."));
+  this->CancelButton = new QPushButton(tr("Cancel"), this);
+  this->CancelButton->setObjectName("cancel");
+  this->CancelButton->setToolTip(tr("Stop the run under way; the mesh shown stays."));
+  connect(this->MeshButton, &QPushButton::clicked, this, [this]() { this->startMeshing(); });
+  connect(this->CancelButton, &QPushButton::clicked, this, &MainWindow::cancelMeshing);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(this->MeshButton);
+  buttons->addWidget(this->CancelButton);
+
+  this->Histogram = new widgets::AngleHistogram(this);
+  this->Summary = new QPlainTextEdit(this);
+  this->Summary->setObjectName("summary");
+  this->Summary->setReadOnly(true);
+  this->Summary->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  this->Summary->setPlaceholderText(tr("Open a label image (File > Open), then Mesh."));
+
+  auto* side = new QWidget(this);
+  auto* sideLayout = new QVBoxLayout(side);
+  sideLayout->addWidget(this->Panel);
+  sideLayout->addLayout(buttons);
+  sideLayout->addWidget(this->Histogram);
+  sideLayout->addWidget(this->Summary, 1);
+
+  this->View = new widgets::MeshView(this);
+  auto* splitter = new QSplitter(this);
+  splitter->addWidget(side);
+  splitter->addWidget(this->View);
+  splitter->setStretchFactor(1, 1);
+  this->setCentralWidget(splitter);
+
+  this->Progress = new QProgressBar(this);
+  this->Progress->setObjectName("progress");
+  this->Progress->setRange(0, kProgressSteps);
+  this->Progress->setValue(0);
+  this->Stage = new QLabel(this);
+  this->statusBar()->addWidget(this->Stage, 1);
+  this->statusBar()->addPermanentWidget(this->Progress);
+
+  connect(&this->Job, &MeshingJob::progressed, this, &MainWindow::onProgress);
+  connect(&this->Job, &MeshingJob::finished, this, &MainWindow::onFinished);
+  connect(&this->Job, &MeshingJob::cancelled, this, &MainWindow::onCancelled);
+  connect(&this->Job, &MeshingJob::failed, this, &MainWindow::onFailed);
+  this->buildMenus();
+  this->setMeshingState(false);
+  this->resize(1200, 760);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus()
+{
+  QMenu* file = this->menuBar()->addMenu(tr("&File"));
+  this->OpenAction = file->addAction(tr("&Open label image..."), this, &MainWindow::chooseImage, QKeySequence::Open);
+  this->SaveMeshAction = file->addAction(tr("&Save mesh..."), this, &MainWindow::chooseMeshFile, QKeySequence::Save);
+  this->SavePictureAction = file->addAction(tr("Save &picture..."), this, &MainWindow::choosePictureFile);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+}
+
+void MainWindow::fail(const QString& message)
+{
+  this->statusBar()->showMessage(message);
+  emit errorOccurred(message);
+}
+
+bool MainWindow::openImage(const QString& path)
+{
+  if (this->Job.isRunning())
+  {
+    this->fail(tr("cannot open an image while meshing; cancel the run first"));
+    return false;
+  }
+  labelmesher_cli::LabeledImage input;
+  try
+  {
+    input = labelmesher_cli::ReadLabeledImage(path.toStdString());
+  }
+  catch (const std::exception& e)
+  {
+    this->fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  this->Image = input.Image;
+  this->Materials = input.Materials;
+  this->Notes.clear();
+  for (const std::string& note : input.Notes)
+  {
+    this->Notes << QString::fromStdString(note);
+  }
+  this->ImagePath = path;
+  int dims[3];
+  double spacing[3];
+  this->Image->GetDimensions(dims);
+  this->Image->GetSpacing(spacing);
+  // The filters' voxel: the smallest spacing over the meshed axes (a 2D image's slice axis is not).
+  int meshedAxes = 0;
+  double smallest = std::numeric_limits<double>::max();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (dims[a] > 1)
+    {
+      ++meshedAxes;
+      smallest = std::min(smallest, std::abs(spacing[a]));
+    }
+  }
+  this->Panel->setImageGeometry(meshedAxes == 3 ? 3 : 2, smallest == std::numeric_limits<double>::max() ? 1.0 : smallest);
+  this->Report.reset();
+  this->View->clear();
+  this->Histogram->clear();
+  this->Summary->setPlainText(tr("%1: %2 x %3 x %4 voxels, spacing %5 x %6 x %7 mm. Press Mesh.")
+                                .arg(QFileInfo(path).fileName())
+                                .arg(dims[0]).arg(dims[1]).arg(dims[2])
+                                .arg(spacing[0]).arg(spacing[1]).arg(spacing[2]));
+  this->setWindowTitle(tr("LabelMesher - %1").arg(QFileInfo(path).fileName()));
+  this->setMeshingState(false);
+  emit imageOpened(path);
+  return true;
+}
+
+bool MainWindow::startMeshing()
+{
+  if (!this->Image)
+  {
+    this->fail(tr("no label image is open (File > Open)"));
+    return false;
+  }
+  if (this->Job.isRunning())
+  {
+    this->fail(tr("a run is already under way"));
+    return false;
+  }
+  MeshingSettings settings;
+  settings.ImageToMeshDistance = this->Panel->imageToMeshDistance();
+  settings.MeshToImageDistance = this->Panel->meshToImageDistance();
+  settings.Decimate = this->Panel->decimate();
+  settings.MinimumAngle = this->Panel->minimumAngle();
+  if (!this->Job.start(this->Image, settings))
+  {
+    this->fail(tr("the run could not be started"));
+    return false;
+  }
+  this->RunSettings = settings;
+  this->Progress->setValue(0);
+  this->Stage->setText(tr("meshing..."));
+  this->setMeshingState(true);
+  return true;
+}
+
+void MainWindow::cancelMeshing()
+{
+  if (this->Job.isRunning())
+  {
+    this->Job.cancel();
+    this->Stage->setText(tr("cancelling..."));
+    this->CancelButton->setEnabled(false);
+  }
+}
+
+bool MainWindow::isMeshing() const
+{
+  return this->Job.isRunning();
+}
+
+double MainWindow::progress() const
+{
+  return static_cast<double>(this->Progress->value()) / kProgressSteps;
+}
+
+void MainWindow::setMeshingState(bool running)
+{
+  this->MeshButton->setEnabled(!running && this->Image);
+  this->CancelButton->setEnabled(running);
+  this->Panel->setEnabled(!running);
+  this->OpenAction->setEnabled(!running);
+  const bool haveMesh = !running && this->View->mesh() != nullptr;
+  this->SaveMeshAction->setEnabled(haveMesh);
+  this->SavePictureAction->setEnabled(haveMesh);
+}
+
+void MainWindow::onProgress(double fraction, const QString& stage)
+{
+  this->Progress->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kProgressSteps + 0.5));
+  if (!stage.isEmpty())
+  {
+    this->Stage->setText(stage);
+  }
+}
+
+void MainWindow::onFinished()
+{
+  const MeshingOutcome& out = this->Job.outcome();
+  labelmesher_cli::Arguments args; // the report's parameters, as the CLI would have them
+  args.Input = this->ImagePath.toStdString();
+  args.Outputs = { "(not saved)" };
+  args.ImageToMeshDistance = this->RunSettings.ImageToMeshDistance;
+  args.MeshToImageDistance = this->RunSettings.MeshToImageDistance;
+  args.Decimate = this->RunSettings.Decimate;
+  args.MinimumAngle = this->RunSettings.MinimumAngle;
+  labelmesher_cli::RunReport report = labelmesher_cli::MakeReport(args, this->Image, out.Mesh, out.Initial);
+  report.Materials = this->Materials;
+  for (const QString& note : this->Notes)
+  {
+    report.Notes.push_back(note.toStdString());
+  }
+  this->Report = report;
+
+  std::map<int, QColor> colours;
+  for (const labelmesher::io::MaterialInfo& m : this->Materials.Entries())
+  {
+    if (m.HasColor())
+    {
+      colours[m.Label] = QColor::fromRgbF(m.Color[0], m.Color[1], m.Color[2]);
+    }
+  }
+  this->View->setMesh(out.Mesh, colours);
+  // The bound the mesh was made under: the decimator's, or the mesher's proven one.
+  const double bound = this->RunSettings.Decimate ? this->RunSettings.MinimumAngle : 0.0;
+  this->Histogram->setMesh(out.Mesh, bound);
+  this->showReport();
+  this->Progress->setValue(kProgressSteps);
+  QString done = tr("meshed in %1 s: %2 cells").arg(out.Seconds, 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
+  if (!out.Warning.isEmpty())
+  {
+    done += tr("; warning: %1").arg(out.Warning);
+  }
+  this->Stage->setText(done);
+  this->setMeshingState(false);
+  emit meshingFinished();
+}
+
+void MainWindow::onCancelled(double fraction)
+{
+  this->Stage->setText(tr("cancelled at %1 %; the mesh shown is the previous one").arg(fraction * 100.0, 0, 'f', 0));
+  this->setMeshingState(false);
+  emit meshingCancelled();
+}
+
+void MainWindow::onFailed(const QString& message)
+{
+  this->setMeshingState(false);
+  this->fail(message);
+  emit meshingFailed(message);
+}
+
+void MainWindow::showReport()
+{
+  if (!this->Report)
+  {
+    return;
+  }
+  std::ostringstream text;
+  labelmesher_cli::PrintSummary(*this->Report, text); // the CLI's own summary
+  this->Summary->setPlainText(QString::fromStdString(text.str()));
+}
+
+QString MainWindow::summaryText() const
+{
+  return this->Summary->toPlainText();
+}
+
+bool MainWindow::saveMesh(const QString& path)
+{
+  const MeshingOutcome& out = this->Job.outcome();
+  if (!out.Mesh || !this->Report)
+  {
+    this->fail(tr("there is no mesh to save yet"));
+    return false;
+  }
+  try
+  {
+    labelmesher::io::MeshFileWriter writer(out.Mesh, out.Interfaces, this->Materials, {});
+    const std::vector<std::string> written = writer.Write(path.toStdString());
+    this->Report->Outputs = written;
+  }
+  catch (const std::exception& e)
+  {
+    this->fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  this->showReport();
+  this->statusBar()->showMessage(tr("saved %1").arg(path));
+  return true;
+}
+
+bool MainWindow::savePicture(const QString& path)
+{
+  QByteArray png;
+  QBuffer buffer(&png);
+  buffer.open(QIODevice::WriteOnly);
+  if (!this->View->grabPicture().save(&buffer, "PNG"))
+  {
+    this->fail(tr("the view could not be encoded as PNG"));
+    return false;
+  }
+  try
+  {
+    labelmesher::io::SafeFile file(path.toStdString());
+    file.Stream().write(png.constData(), png.size());
+    file.Commit();
+  }
+  catch (const std::exception& e)
+  {
+    this->fail(QString::fromStdString(e.what()));
+    return false;
+  }
+  this->statusBar()->showMessage(tr("saved %1").arg(path));
+  return true;
+}
+
+void MainWindow::chooseImage()
+{
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open label image"), QString(),
+    tr("Label images (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd *.vti *.png);;All files (*)"));
+  if (!path.isEmpty())
+  {
+    this->openImage(path);
+  }
+}
+
+void MainWindow::chooseMeshFile()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save mesh"), QString(),
+    tr("Meshes (*.vtu *.vtk *.msh *.inp *.mesh *.vtp *.stl *.obj)"));
+  if (!path.isEmpty())
+  {
+    this->saveMesh(path);
+  }
+}
+
+void MainWindow::choosePictureFile()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save picture"), QString(), tr("PNG images (*.png)"));
+  if (!path.isEmpty())
+  {
+    this->savePicture(path);
+  }
+}
+
+} // namespace gui
+} // namespace labelmesher

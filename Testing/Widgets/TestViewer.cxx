@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// QtTest of labelmesher-gui's window, run under xvfb-run (VTK's view needs OpenGL): it opens a
+// shared real image, meshes it in the worker thread and checks the guarantees in the report, the
+// angle histogram (its own measure) against the report, clipping, a saved picture
+// that is not blank and a saved mesh read back; then it cancels a second run midway and checks the
+// window kept the first mesh and meshes again; bad paths give one sentence and change nothing.
+#include "AngleHistogram.h"
+#include "MainWindow.h"
+#include "MeshView.h"
+#include "ParameterPanel.h"
+
+#include "QVTKOpenGLNativeWidget.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QImage>
+#include <QProgressBar>
+#include <QSet>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <memory>
+
+using labelmesher::gui::MainWindow;
+using labelmesher::widgets::ParameterPanel;
+
+namespace
+{
+constexpr int kRunTimeoutMs = 600000; // a hung run fails the test instead of hanging CI
+
+/// Pixels that are not the view's white background, and the distinct colours among them.
+std::pair<double, int> Coverage(const QImage& image)
+{
+  long long coloured = 0;
+  QSet<QRgb> colours;
+  for (int y = 0; y < image.height(); ++y)
+  {
+    for (int x = 0; x < image.width(); ++x)
+    {
+      const QRgb pixel = image.pixel(x, y) & 0xFFFFFF;
+      if (pixel != 0xFFFFFF)
+      {
+        ++coloured;
+        colours.insert(pixel);
+      }
+    }
+  }
+  return { static_cast<double>(coloured) / (static_cast<double>(image.width()) * image.height()),
+    colours.size() };
+}
+} // namespace
+
+class TestViewer : public QObject
+{
+  Q_OBJECT
+
+  std::unique_ptr<MainWindow> Window;
+  QTemporaryDir Folder;
+  vtkIdType FirstCells = 0;
+
+  QString image() const { return qEnvironmentVariable("LABELMESHER_DATA") + "/3d/iso2mesh_rat_head.nrrd"; }
+
+private slots:
+  void initTestCase()
+  {
+    QVERIFY(Folder.isValid());
+    Folder.setAutoRemove(qEnvironmentVariableIsEmpty("LABELMESHER_KEEP_TEST_FILES")); // to look at the pictures
+    if (!Folder.autoRemove())
+      qInfo("test files kept in %s", qPrintable(Folder.path()));
+    QVERIFY2(QFile::exists(image()), qPrintable("missing shared image " + image()));
+    Window = std::make_unique<MainWindow>();
+    Window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(Window.get()));
+    QSignalSpy opened(Window.get(), &MainWindow::imageOpened);
+    QVERIFY(Window->openImage(image()));
+    QCOMPARE(opened.count(), 1);
+    QCOMPARE(Window->parameters()->imageDimension(), 3);
+  }
+
+  void meshesTheImageWithItsGuarantees()
+  {
+    auto* bar = Window->findChild<QProgressBar*>("progress");
+    QVERIFY(bar);
+    QSignalSpy progress(bar, &QProgressBar::valueChanged);
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    Window->parameters()->setPreset(ParameterPanel::Preset::Balanced); // 2 voxels each way, 15 degrees
+    QVERIFY(Window->startMeshing());
+    QVERIFY(Window->isMeshing());
+    QVERIFY(!Window->startMeshing()); // one run at a time
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QCOMPARE(errors.count(), 1); // the refused second start only
+
+    // Progress reached the window while the worker ran, in order, up to the end.
+    QVERIFY2(progress.count() >= 5, qPrintable(QString::number(progress.count())));
+    int previous = -1;
+    for (const QList<QVariant>& value : progress)
+    {
+      QVERIFY(value.at(0).toInt() >= previous);
+      previous = value.at(0).toInt();
+    }
+    QCOMPARE(previous, bar->maximum());
+
+    // The guarantees, from the report (the CLI's figures).
+    QVERIFY(Window->report().has_value());
+    const labelmesher_cli::RunReport& r = *Window->report();
+    QVERIFY(r.Measured());
+    QVERIFY(r.Decimation.has_value());
+    QVERIFY2(*r.MinimumAngle >= 15.0 - 1e-9, qPrintable(QString::number(*r.MinimumAngle)));
+    QCOMPARE(r.InvertedCells.value_or(-1), 0.0);
+    QCOMPARE(r.HausdorffCertified.value_or(0), 1.0);
+    QVERIFY(*r.MeasuredImageToMesh <= 2.0 + 1e-9);
+    QVERIFY(*r.MeasuredMeshToImage <= 2.0 + 1e-9);
+    QVERIFY(r.TopologyMatches());
+    QVERIFY(r.Cells > 0 && r.Cells < r.Decimation->CellsBefore);
+    FirstCells = r.Cells;
+
+    // The histogram measures every shown cell apart from the filters' checks, and agrees with them.
+    const auto* histogram = Window->histogram();
+    QCOMPARE(histogram->measuredCells(), r.Cells);
+    QVERIFY(histogram->smallestAngle() >= 15.0 - 1e-6);
+    QVERIFY2(std::abs(histogram->smallestAngle() - *r.MinimumAngle) < 1e-6,
+      qPrintable(QString("%1 vs %2").arg(histogram->smallestAngle()).arg(*r.MinimumAngle)));
+    vtkIdType binned = 0;
+    for (std::size_t bin = 0; bin < histogram->counts().size(); ++bin)
+    {
+      binned += histogram->counts()[bin];
+      if ((bin + 1) * labelmesher::widgets::AngleHistogram::BinWidth <= 15.0)
+        QCOMPARE(histogram->counts()[bin], vtkIdType(0)); // nothing below the bound
+    }
+    QCOMPARE(binned, r.Cells);
+
+    // The summary is the CLI's text; the view shows every cell.
+    QVERIFY(Window->summaryText().contains("Both bounds certified"));
+    QVERIFY(Window->summaryText().contains("Minimum dihedral angle"));
+    QCOMPARE(Window->view()->shownCells(), r.Cells);
+  }
+
+  void clippingHidesTheFarSide()
+  {
+    auto* view = Window->view();
+    view->setClipping(true);
+    view->setClipAxis(2);
+    view->setClipPosition(0.5);
+    const vtkIdType clipped = view->shownCells();
+    QVERIFY2(clipped > 0 && clipped < FirstCells, qPrintable(QString::number(clipped)));
+    view->setClipPosition(0.9);
+    QVERIFY(view->shownCells() > clipped); // the plane moved outwards: more cells on the near side
+    view->setClipping(false);
+    QCOMPARE(view->shownCells(), FirstCells);
+  }
+
+  void savedPicturesAreNotBlank()
+  {
+    const QString whole = Folder.filePath("whole.png");
+    const QString clipped = Folder.filePath("clipped.png");
+    QVERIFY(Window->savePicture(whole));
+    Window->view()->setClipping(true);
+    Window->view()->setClipAxis(0);
+    Window->view()->setClipPosition(0.5);
+    QVERIFY(Window->savePicture(clipped));
+    Window->view()->setClipping(false);
+    QImage a(whole), b(clipped);
+    QVERIFY(!a.isNull() && !b.isNull());
+    QVERIFY(a.width() > 100 && a.height() > 100);
+    const auto [coverA, coloursA] = Coverage(a);
+    const auto [coverB, coloursB] = Coverage(b);
+    // The mesh fills a good part of the view, shaded (many colours), and clipping shows less of it.
+    QVERIFY2(coverA > 0.05 && coloursA > 20, qPrintable(QString("%1 %2").arg(coverA).arg(coloursA)));
+    QVERIFY2(coverB > 0.02 && coverB < coverA, qPrintable(QString("%1 vs %2").arg(coverB).arg(coverA)));
+    QVERIFY(a != b);
+
+    // Coloured by material: the rat head's one material is drawn in its table colour (shaded:
+    // the same hue, darker or lighter), apart from the dark edges.
+    QCOMPARE(Window->view()->numberOfMaterials(), 1);
+    const QColor material = Window->view()->materialColour(1);
+    QVERIFY(material.isValid());
+    QVERIFY(!Window->view()->materialColour(2).isValid());
+    long long shaded = 0, onHue = 0;
+    for (int y = 0; y < a.height(); ++y)
+      for (int x = 0; x < a.width(); ++x)
+      {
+        const QColor pixel = a.pixelColor(x, y);
+        if ((pixel.rgb() & 0xFFFFFF) == 0xFFFFFF || pixel.value() < 60 || pixel.saturation() < 40)
+          continue;
+        ++shaded;
+        const int difference = std::abs(pixel.hue() - material.hue());
+        onHue += std::min(difference, 360 - difference) <= 12;
+      }
+    QVERIFY2(shaded > 0 && onHue > 0.9 * shaded, qPrintable(QString("%1 of %2").arg(onHue).arg(shaded)));
+  }
+
+  void savesTheMeshAndRefusesBadPaths()
+  {
+    const QString path = Folder.filePath("mesh.vtu");
+    QVERIFY(Window->saveMesh(path));
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.toUtf8().constData());
+    reader->Update();
+    QCOMPARE(reader->GetOutput()->GetNumberOfCells(), FirstCells);
+    QVERIFY(Window->summaryText().contains("mesh.vtu"));
+
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    QVERIFY(!Window->saveMesh(Folder.filePath("no-such-folder/mesh.vtu")));
+    QVERIFY(!Window->saveMesh(Folder.filePath("mesh.xyz")));
+    QVERIFY(!Window->savePicture(Folder.filePath("no-such-folder/a.png")));
+    QVERIFY(!Window->saveMesh(Folder.path())); // a folder
+    QCOMPARE(errors.count(), 4);
+    for (const QList<QVariant>& e : errors)
+    {
+      const QString message = e.at(0).toString();
+      QVERIFY2(!message.isEmpty() && !message.contains('\n') && !message.contains("\x1b"), qPrintable(message));
+    }
+    QVERIFY(!QFile::exists(Folder.filePath("mesh.xyz")));
+    QCOMPARE(QDir(Folder.path()).entryList(QDir::Files).size(), 3); // mesh.vtu and the two pictures
+  }
+
+  void cancelStopsASecondRunMidway()
+  {
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QSignalSpy cancelled(Window.get(), &MainWindow::meshingCancelled);
+    vtkUnstructuredGrid* shown = Window->view()->mesh();
+    Window->parameters()->setPreset(ParameterPanel::Preset::Faithful); // 1 voxel, 20 degrees: longer
+    QVERIFY(Window->startMeshing());
+    // Midway: into the decimator (the mesher takes the first 30 % of the progress).
+    QTRY_VERIFY_WITH_TIMEOUT(Window->progress() > 0.4 || !Window->isMeshing(), kRunTimeoutMs);
+    QVERIFY2(Window->isMeshing(), "the run ended before it could be cancelled midway");
+    const double at = Window->progress();
+    Window->cancelMeshing();
+    QTRY_VERIFY_WITH_TIMEOUT(!Window->isMeshing(), kRunTimeoutMs);
+    QCOMPARE(cancelled.count(), 1);
+    QCOMPARE(finished.count(), 0);
+    QVERIFY2(Window->progress() < 0.999 && Window->progress() >= at, qPrintable(QString::number(Window->progress())));
+    // The window kept the first run's mesh and report.
+    QCOMPARE(Window->view()->mesh(), shown);
+    QCOMPARE(Window->report()->Cells, FirstCells);
+    QCOMPARE(Window->report()->Decimation->AngleBound, 15.0);
+
+    // And it meshes again after the cancel (here the coarse preset).
+    Window->parameters()->setPreset(ParameterPanel::Preset::Fast);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QVERIFY(*Window->report()->MinimumAngle >= 10.0 - 1e-9);
+    QCOMPARE(Window->report()->HausdorffCertified.value_or(0), 1.0);
+    QVERIFY(Window->report()->TopologyMatches());
+    QVERIFY(Window->report()->Cells != FirstCells);
+  }
+
+  void badImagesChangeNothing()
+  {
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    const long long cells = Window->report()->Cells;
+    QVERIFY(!Window->openImage(Folder.filePath("missing.nrrd")));
+    QFile text(Folder.filePath("not-an-image.nrrd"));
+    QVERIFY(text.open(QIODevice::WriteOnly));
+    text.write("NRRD0004\ntype: float\n");
+    text.close();
+    QVERIFY(!Window->openImage(text.fileName()));
+    QCOMPARE(errors.count(), 2);
+    for (const QList<QVariant>& e : errors)
+      QVERIFY2(!e.at(0).toString().isEmpty() && !e.at(0).toString().contains('\n'), qPrintable(e.at(0).toString()));
+    QCOMPARE(Window->report()->Cells, cells);
+    QVERIFY(Window->view()->mesh() != nullptr);
+  }
+
+  void meshesA2DImageOfManyMaterials()
+  {
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    const QString slice = qEnvironmentVariable("LABELMESHER_DATA") + "/2d/digimouse_sagittal.png";
+    QVERIFY(Window->openImage(slice));
+    QCOMPARE(Window->parameters()->imageDimension(), 2);
+    QVERIFY(!Window->report().has_value()); // the 3D run's report went with its image
+    QVERIFY(!Window->saveMesh(Folder.filePath("nothing.vtu")));
+    Window->parameters()->setPreset(ParameterPanel::Preset::Balanced);
+    Window->parameters()->setMinimumAngle(40.0); // 2D allows up to 45 degrees
+    QCOMPARE(Window->parameters()->minimumAngle(), 40.0);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    const labelmesher_cli::RunReport& r = *Window->report();
+    QCOMPARE(r.MeshDimension, 2);
+    QVERIFY2(*r.MinimumAngle >= 40.0 - 1e-9, qPrintable(QString::number(*r.MinimumAngle)));
+    QCOMPARE(r.HausdorffCertified.value_or(0), 1.0);
+    QVERIFY(r.TopologyMatches());
+    QVERIFY(Window->summaryText().contains("Minimum planar angle"));
+    QCOMPARE(Window->histogram()->measuredCells(), r.Cells);
+    QVERIFY(std::abs(Window->histogram()->smallestAngle() - *r.MinimumAngle) < 1e-6);
+    // Every material present is drawn, each in its own colour.
+    const int materials = static_cast<int>(r.CellsPerMaterial.size());
+    QCOMPARE(materials, 17);
+    QCOMPARE(Window->view()->numberOfMaterials(), materials);
+    QSet<QRgb> colours;
+    for (const auto& entry : r.CellsPerMaterial)
+      colours.insert(Window->view()->materialColour(entry.first).rgb());
+    QCOMPARE(colours.size(), materials);
+    const auto [cover, shades] = Coverage(Window->view()->grabPicture());
+    QVERIFY2(cover > 0.02 && shades >= materials, qPrintable(QString("%1 %2").arg(cover).arg(shades)));
+  }
+
+  void cleanupTestCase() { Window.reset(); }
+};
+
+int main(int argc, char* argv[])
+{
+  // VTK's OpenGL needs its surface format set before the application exists.
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  TestViewer test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "TestViewer.moc"

@@ -203,7 +203,7 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
         display = outputModel.GetDisplayNode()
         display.SetActiveScalarName("Material")
         display.SetScalarVisibility(True)
-        display.SetAndObserveColorNodeID(self.materialColorNode(materials).GetID())
+        display.SetAndObserveColorNodeID(self.materialColorNode(materials, display.GetColorNode()).GetID())
         display.SetScalarRangeFlag(slicer.vtkMRMLDisplayNode.UseColorNodeScalarRange)
         logging.info("LabelMesher: %s", summary_text(result.report).replace("\n", "; "))
         return result.report
@@ -219,8 +219,11 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
                 materials.append(Material(label, f"label_{label}"))
         return materials
 
-    def materialColorNode(self, materials):
-        node = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLColorTableNode", "LabelMesher materials")
+    def materialColorNode(self, materials, current=None):
+        """The output's own colour table, refilled on every Apply (one node per output, not per run)."""
+        node = current
+        if not (node and node.IsA("vtkMRMLColorTableNode") and node.GetName().startswith("LabelMesher materials")):
+            node = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLColorTableNode", "LabelMesher materials")
         node.SetTypeToUser()
         node.SetNumberOfColors(max([m.label for m in materials] + [0]) + 1)
         node.SetColor(0, "background", 0.0, 0.0, 0.0, 0.0)

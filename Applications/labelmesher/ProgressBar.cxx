@@ -50,4 +50,22 @@ void ProgressBar::Finish()
   }
 }
 
+FilterProgress TerminalProgress::Function()
+{
+  return [this](vtkAlgorithm* running, double fraction, const std::string& stage) {
+    if (running != this->Current)
+    {
+      this->Bar = std::make_unique<ProgressBar>(this->Enabled); // the previous one clears its line
+      this->Current = running;
+    }
+    this->Bar->Update(fraction, stage);
+  };
+}
+
+void TerminalProgress::Finish()
+{
+  this->Bar.reset();
+  this->Current = nullptr;
+}
+
 } // namespace labelmesher_cli

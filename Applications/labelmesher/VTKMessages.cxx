@@ -27,7 +27,16 @@ VTKMessages::VTKMessages(vtkObject* object, unsigned long event)
     text.erase(std::remove(text.begin(), text.end(), '\n'), text.end());
     self->FirstMessage = text.empty() ? "unknown VTK error" : text;
   });
-  object->AddObserver(event, this->Command);
+  this->Observed = object;
+  this->Tag = object->AddObserver(event, this->Command);
+}
+
+VTKMessages::~VTKMessages()
+{
+  if (this->Observed)
+  {
+    this->Observed->RemoveObserver(this->Tag);
+  }
 }
 
 namespace

@@ -11,6 +11,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkNew.h"
+#include "vtkWeakPointer.h"
 
 #include <string>
 
@@ -24,6 +25,8 @@ class VTKMessages
 public:
   /// `event`: vtkCommand::ErrorEvent or vtkCommand::WarningEvent.
   VTKMessages(vtkObject* object, unsigned long event);
+  /// Stops observing (the object may outlive this catcher).
+  ~VTKMessages();
   VTKMessages(const VTKMessages&) = delete;
   VTKMessages& operator=(const VTKMessages&) = delete;
 
@@ -33,6 +36,8 @@ public:
 private:
   std::string FirstMessage;
   vtkNew<vtkCallbackCommand> Command;
+  vtkWeakPointer<vtkObject> Observed;
+  unsigned long Tag = 0;
 };
 
 /// Replaces VTK's output window by one that drops everything: VTK's log records

@@ -9,7 +9,9 @@
 #include "Arguments.h"
 #include "ColorTableReader.h"
 #include "CurveReport.h"
+#include "FilterRun.h"
 #include "ImageReader.h"
+#include "MeshingPipeline.h"
 #include "ProgressBar.h"
 #include "Report.h"
 #include "StringUtilities.h"
@@ -20,12 +22,8 @@
 
 #include "itkObject.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
 #include "vtkBezierCurver.h"
 #include "vtkImageData.h"
-#include "vtkLabelOctreeMesher.h"
-#include "vtkMeshDecimator.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
@@ -86,26 +84,14 @@ void CheckOutputPaths(const Arguments& args)
 /// Returns its first warning (empty if none).
 std::string UpdateWithProgress(vtkAlgorithm* algorithm, bool quiet)
 {
-  VTKMessages errors(algorithm, vtkCommand::ErrorEvent);
-  VTKMessages warnings(algorithm, vtkCommand::WarningEvent);
-  ProgressBar bar(!quiet);
-  vtkNew<vtkCallbackCommand> progress;
-  progress->SetClientData(&bar);
-  progress->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
-    auto* running = static_cast<vtkAlgorithm*>(caller);
-    const char* stage = running->GetProgressText();
-    static_cast<ProgressBar*>(clientData)->Update(
-      *static_cast<double*>(callData), stage ? stage : "");
-  });
-  const unsigned long tag = algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
-  algorithm->Update();
-  algorithm->RemoveObserver(tag);
+  TerminalProgress bar(!quiet);
+  const FilterMessages messages = UpdateFilter(algorithm, bar.Function());
   bar.Finish();
-  if (!errors.First().empty())
+  if (!messages.Error.empty())
   {
-    throw RunError(errors.First());
+    throw RunError(messages.Error);
   }
-  return warnings.First();
+  return messages.Warning;
 }
 
 template <typename Report, typename Writer>
@@ -159,38 +145,23 @@ int Run(const Arguments& args)
     }
   }
 
-  // The decimator needs the whole box (background cells); it measures the
-  // final mesh, so the mesher does not measure what is decimated anyway.
-  vtkNew<vtkLabelOctreeMesher> mesher;
-  mesher->SetImageToMeshDistance(args.ImageToMeshDistance);
-  mesher->SetMeshToImageDistance(args.MeshToImageDistance);
-  mesher->SetIncludeBackground(args.Decimate || args.IncludeBackground);
-  mesher->SetMeasureOutput(args.Measure && !args.Decimate);
-  mesher->SetInputData(image);
-  const std::string warning = UpdateWithProgress(mesher, args.Quiet);
-  vtkUnstructuredGrid* initial = mesher->GetOutput();
-  if (initial->GetNumberOfCells() == 0)
+  MeshingSettings settings;
+  settings.ImageToMeshDistance = args.ImageToMeshDistance;
+  settings.MeshToImageDistance = args.MeshToImageDistance;
+  settings.Decimate = args.Decimate;
+  settings.MinimumAngle = args.MinimumAngle;
+  settings.RelocateInteriorVertices = args.Relocate;
+  settings.IncludeBackground = args.IncludeBackground;
+  settings.Measure = args.Measure;
+  TerminalProgress bars(!args.Quiet);
+  const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
+  bars.Finish();
+  vtkUnstructuredGrid* initial = meshed.Initial;
+  vtkUnstructuredGrid* mesh = meshed.Mesh;
+  vtkPolyData* interfaces = meshed.Interfaces;
+  if (meshed.Aborted || !mesh)
   {
-    throw RunError(warning.empty() ? "the mesher produced no cells" : warning);
-  }
-  vtkUnstructuredGrid* mesh = initial;
-  vtkPolyData* interfaces = mesher->GetBoundaryOutput();
-  vtkNew<vtkMeshDecimator> decimator;
-  if (args.Decimate)
-  {
-    decimator->SetMinimumAngle(args.MinimumAngle);
-    decimator->SetRelocateInteriorVertices(args.Relocate);
-    decimator->SetIncludeBackground(args.IncludeBackground);
-    decimator->SetMeasureOutput(args.Measure);
-    decimator->SetInputConnection(0, mesher->GetOutputPort(0));
-    decimator->SetInputDataObject(1, image);
-    const std::string decimatorWarning = UpdateWithProgress(decimator, args.Quiet);
-    mesh = decimator->GetOutput();
-    interfaces = decimator->GetBoundaryOutput();
-    if (mesh->GetNumberOfCells() == 0)
-    {
-      throw RunError(decimatorWarning.empty() ? "the decimator produced no cells" : decimatorWarning);
-    }
+    throw RunError("meshing was aborted");
   }
 
   if (!curve)

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_cli_MeshingPipeline_h
+#define labelmesher_cli_MeshingPipeline_h
+
+/**
+ * @file MeshingPipeline.h
+ * The pipeline both front ends run: vtkLabelOctreeMesher, then (by default)
+ * vtkMeshDecimator on the mesher's whole box, which needs the background cells
+ * and measures the final mesh itself (so the mesher does not measure).
+ */
+
+#include "FilterRun.h"
+
+#include "vtkPolyData.h"         // complete types: the outcome is copied by value
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <stdexcept>
+#include <string>
+
+class vtkImageData;
+
+namespace labelmesher_cli
+{
+
+/// A filter failed or made no cells; the message is one line.
+struct MeshingError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct MeshingSettings
+{
+  double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
+  double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
+  bool Decimate = true;
+  double MinimumAngle = 15.0;       ///< degrees, the decimator's bound
+  bool RelocateInteriorVertices = true;
+  bool IncludeBackground = false;   ///< keep background cells in the final mesh
+  bool Measure = true;              ///< measure the final mesh (angles, distances, topology)
+};
+
+struct MeshingOutcome
+{
+  vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the final mesh
+  vtkSmartPointer<vtkUnstructuredGrid> Initial; ///< the mesher's output (Mesh itself without decimation)
+  vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
+  std::string Warning;                          ///< the filters' first warning, empty if none
+  bool Aborted = false; ///< a filter stopped on request (AbortExecute); the meshes are then null
+};
+
+/// Runs the pipeline on `image`; `progress` sees each filter's own progress. Throws MeshingError.
+MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress);
+
+} // namespace labelmesher_cli
+
+#endif

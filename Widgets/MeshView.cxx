@@ -58,6 +58,21 @@ QColor PaletteColour(vtkIdType index)
   const double hue = std::fmod(0.1 + 0.6180339887498949 * static_cast<double>(index), 1.0);
   return QColor::fromHsvF(hue, 0.55, 0.85);
 }
+
+/// The axis along which the bounds have no extent (a flat 2D mesh), or -1.
+int FlatAxis(const double bounds[6])
+{
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  for (int a = 0; a < 3; ++a)
+  {
+    if (bounds[2 * a + 1] - bounds[2 * a] <= 1e-9 * diagonal)
+    {
+      return a;
+    }
+  }
+  return -1;
+}
 } // namespace
 
 MeshView::MeshView(QWidget* parent)
@@ -150,13 +165,23 @@ void MeshView::setMesh(vtkUnstructuredGrid* mesh, const std::map<int, QColor>& c
   this->Clip->SetInputData(mesh);
   this->updateClipPlane();
   this->Actor->SetVisibility(true);
-  // An oblique view from the front: a 3D mesh reads as a solid; a 2D one stays nearly face-on.
+  // A 3D mesh: an oblique view from the front, so it reads as a solid. A flat (2D) mesh: face-on,
+  // along its flat axis, which need not be z (a sagittal or coronal slice).
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const int flat = FlatAxis(bounds);
   vtkCamera* camera = this->Renderer->GetActiveCamera();
-  camera->SetPosition(0, 0, 1);
+  double position[3] = { 0, 0, 0 }, up[3] = { 0, 0, 0 };
+  position[flat < 0 ? 2 : flat] = 1.0;
+  up[flat == 1 ? 2 : 1] = 1.0;
+  camera->SetPosition(position);
   camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->Azimuth(25);
-  camera->Elevation(20);
+  camera->SetViewUp(up);
+  if (flat < 0)
+  {
+    camera->Azimuth(25);
+    camera->Elevation(20);
+  }
   this->Renderer->ResetCamera(mesh->GetBounds());
   this->render();
 }
@@ -247,7 +272,8 @@ void MeshView::updateClipPlane()
   double origin[3] = { bounds[0], bounds[2], bounds[4] };
   double normal[3] = { 0, 0, 0 };
   normal[axis] = 1.0;
-  if (this->clipping())
+  // Across the flat axis of a 2D mesh every point lies on the plane: nothing to clip.
+  if (this->clipping() && axis != FlatAxis(bounds))
   {
     const double t = static_cast<double>(this->PositionSlider->value()) / kSliderSteps;
     origin[axis] = bounds[2 * axis] + t * (bounds[2 * axis + 1] - bounds[2 * axis]);

@@ -15,7 +15,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QBuffer>
+#include <QCloseEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontDatabase>
@@ -30,6 +32,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -182,7 +185,7 @@ bool MainWindow::startMeshing()
     this->fail(tr("a run is already under way"));
     return false;
   }
-  MeshingSettings settings;
+  labelmesher_cli::MeshingSettings settings;
   settings.ImageToMeshDistance = this->Panel->imageToMeshDistance();
   settings.MeshToImageDistance = this->Panel->meshToImageDistance();
   settings.Decimate = this->Panel->decimate();
@@ -241,7 +244,7 @@ void MainWindow::onProgress(double fraction, const QString& stage)
 
 void MainWindow::onFinished()
 {
-  const MeshingOutcome& out = this->Job.outcome();
+  const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
   labelmesher_cli::Arguments args; // the report's parameters, as the CLI would have them
   args.Input = this->ImagePath.toStdString();
   args.Outputs = { "(not saved)" };
@@ -266,15 +269,16 @@ void MainWindow::onFinished()
     }
   }
   this->View->setMesh(out.Mesh, colours);
-  // The bound the mesh was made under: the decimator's, or the mesher's proven one.
+  // The line marks the decimator's bound; without decimation none is drawn (the mesher's proven
+  // bound, 30 or 45 degrees, is stated in the summary's angle line, not chosen here).
   const double bound = this->RunSettings.Decimate ? this->RunSettings.MinimumAngle : 0.0;
   this->Histogram->setMesh(out.Mesh, bound);
   this->showReport();
   this->Progress->setValue(kProgressSteps);
-  QString done = tr("meshed in %1 s: %2 cells").arg(out.Seconds, 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
-  if (!out.Warning.isEmpty())
+  QString done = tr("meshed in %1 s: %2 cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
+  if (!out.Warning.empty())
   {
-    done += tr("; warning: %1").arg(out.Warning);
+    done += tr("; warning: %1").arg(QString::fromStdString(out.Warning));
   }
   this->Stage->setText(done);
   this->setMeshingState(false);
@@ -283,7 +287,8 @@ void MainWindow::onFinished()
 
 void MainWindow::onCancelled(double fraction)
 {
-  this->Stage->setText(tr("cancelled at %1 %; the mesh shown is the previous one").arg(fraction * 100.0, 0, 'f', 0));
+  this->Stage->setText(this->View->mesh() ? tr("cancelled at %1 %; the mesh shown is the previous one").arg(fraction * 100.0, 0, 'f', 0)
+                                          : tr("cancelled at %1 %").arg(fraction * 100.0, 0, 'f', 0));
   this->setMeshingState(false);
   emit meshingCancelled();
 }
@@ -313,7 +318,7 @@ QString MainWindow::summaryText() const
 
 bool MainWindow::saveMesh(const QString& path)
 {
-  const MeshingOutcome& out = this->Job.outcome();
+  const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
   if (!out.Mesh || !this->Report)
   {
     this->fail(tr("there is no mesh to save yet"));
@@ -358,6 +363,20 @@ bool MainWindow::savePicture(const QString& path)
   }
   this->statusBar()->showMessage(tr("saved %1").arg(path));
   return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+  if (this->Job.isRunning())
+  {
+    // The filter stops at its next progress report; measuring cannot stop, so this may take a while.
+    this->Stage->setText(tr("stopping the run..."));
+    this->Job.cancel();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    this->Job.wait();
+    QApplication::restoreOverrideCursor();
+  }
+  QMainWindow::closeEvent(event);
 }
 
 void MainWindow::chooseImage()

@@ -95,13 +95,14 @@ private:
   void chooseMeshFile();
   void choosePictureFile();
   void fail(const QString& message);
+  void closeEvent(QCloseEvent* event) override;
 
   MeshingJob Job;
   vtkSmartPointer<vtkImageData> Image;
   labelmesher::io::MaterialTable Materials;
   QStringList Notes;
   QString ImagePath;
-  MeshingSettings RunSettings;       ///< those of the run under way (or the last)
+  labelmesher_cli::MeshingSettings RunSettings; ///< those of the run under way (or the last)
   std::optional<labelmesher_cli::RunReport> Report;
 
   widgets::ParameterPanel* Panel = nullptr;

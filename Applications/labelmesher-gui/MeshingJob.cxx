@@ -1,96 +1,40 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MeshingJob.h"
 
-#include "VTKMessages.h"
-
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
+#include "vtkAlgorithm.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
-#include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
-#include "vtkNew.h"
-#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <QThread>
 
+#include <atomic>
 #include <chrono>
-#include <cmath>
 
 namespace labelmesher
 {
 namespace gui
 {
-
-/// The state one worker thread owns; the window's thread reads it only after the thread ended.
-struct MeshingJob::Run
-{
-  MeshingSettings Settings;
-  vtkSmartPointer<vtkImageData> Image;
-  std::atomic<bool> CancelRequested{ false };
-  std::atomic<double> Fraction{ 0.0 };
-  bool Aborted = false;
-  QString Error;
-  MeshingOutcome Outcome;
-};
-
 namespace
 {
 /// Share of the whole run's progress the mesher takes when the decimator follows (the
 /// decimator's merges and checks take most of the time).
 constexpr double kMesherShare = 0.3;
-
-struct ProgressContext
-{
-  MeshingJob* Job;
-  std::atomic<bool>* CancelRequested;
-  std::atomic<double>* Fraction;
-  double Start, Share;
-  double LastSent = -1.0;
-};
-
-/// Runs `algorithm`, forwarding its progress; returns its first error (empty if none) and keeps
-/// its first warning in `warning` (VTK's output window sees neither).
-QString UpdateFilter(vtkAlgorithm* algorithm, ProgressContext& context, QString& warning)
-{
-  labelmesher_cli::VTKMessages errors(algorithm, vtkCommand::ErrorEvent);
-  labelmesher_cli::VTKMessages warnings(algorithm, vtkCommand::WarningEvent);
-  vtkNew<vtkCallbackCommand> observer;
-  observer->SetClientData(&context);
-  observer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
-    auto* c = static_cast<ProgressContext*>(clientData);
-    auto* running = static_cast<vtkAlgorithm*>(caller);
-    if (c->CancelRequested->load())
-    {
-      running->SetAbortExecute(1); // read by the filter right after this report
-    }
-    const double fraction = c->Start + c->Share * *static_cast<double*>(callData);
-    c->Fraction->store(fraction);
-    // Queued to the window's thread; a few hundred events per run at most.
-    if (fraction - c->LastSent >= 0.005 || fraction >= 1.0)
-    {
-      c->LastSent = fraction;
-      const char* stage = running->GetProgressText();
-      emit c->Job->progressed(fraction, QString::fromUtf8(stage ? stage : ""));
-    }
-  });
-  algorithm->AddObserver(vtkCommand::ProgressEvent, observer);
-  algorithm->Update();
-  if (warning.isEmpty())
-  {
-    warning = QString::fromStdString(warnings.First());
-  }
-  return QString::fromStdString(errors.First());
-}
-
-template <typename T>
-vtkSmartPointer<T> CopyOf(T* data)
-{
-  auto copy = vtkSmartPointer<T>::New();
-  copy->ShallowCopy(data);
-  return copy;
-}
 } // namespace
+
+/// The state one worker owns; the window's thread reads it only after the thread ended.
+struct MeshingJob::Run
+{
+  labelmesher_cli::MeshingSettings Settings;
+  vtkSmartPointer<vtkImageData> Image;
+  std::atomic<bool> CancelRequested{ false };
+  double Fraction = 0.0, LastSent = -1.0;
+  labelmesher_cli::MeshingOutcome Outcome;
+  QString Error;
+  double Seconds = 0.0;
+};
 
 MeshingJob::MeshingJob(QObject* parent)
   : QObject(parent)
@@ -103,6 +47,7 @@ MeshingJob::~MeshingJob()
   {
     this->cancel();
     this->Thread->wait();
+    delete this->Thread; // its finished() is not delivered any more
   }
 }
 
@@ -127,7 +72,7 @@ void MeshingJob::wait()
   }
 }
 
-bool MeshingJob::start(vtkImageData* image, const MeshingSettings& settings)
+bool MeshingJob::start(vtkImageData* image, const labelmesher_cli::MeshingSettings& settings)
 {
   if (this->Thread || !image)
   {
@@ -135,53 +80,40 @@ bool MeshingJob::start(vtkImageData* image, const MeshingSettings& settings)
   }
   auto run = std::make_shared<Run>();
   run->Settings = settings;
-  run->Image = CopyOf(image); // the filters' pipeline information stays off the window's image
+  run->Image = vtkSmartPointer<vtkImageData>::New();
+  run->Image->ShallowCopy(image); // the filters' pipeline information stays off the window's image
   this->Current = run;
   this->Thread = QThread::create([this, run]() {
     const auto start = std::chrono::steady_clock::now();
-    const MeshingSettings& s = run->Settings;
-    // The decimator needs the whole box (background cells) and measures the final mesh itself.
-    vtkNew<vtkLabelOctreeMesher> mesher;
-    mesher->SetImageToMeshDistance(s.ImageToMeshDistance);
-    mesher->SetMeshToImageDistance(s.MeshToImageDistance);
-    mesher->SetIncludeBackground(s.Decimate);
-    mesher->SetMeasureOutput(!s.Decimate);
-    mesher->SetInputData(run->Image);
-    ProgressContext context{ this, &run->CancelRequested, &run->Fraction, 0.0, s.Decimate ? kMesherShare : 1.0 };
-    run->Error = UpdateFilter(mesher, context, run->Outcome.Warning);
-    run->Aborted = mesher->GetAbortExecute() != 0;
-    if (!run->Error.isEmpty() || run->Aborted)
-    {
-      return;
-    }
-    MeshingOutcome& out = run->Outcome;
-    out.Initial = CopyOf(mesher->GetOutput());
-    out.Mesh = out.Initial;
-    out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
-    if (s.Decimate)
-    {
-      vtkNew<vtkMeshDecimator> decimator;
-      decimator->SetMinimumAngle(s.MinimumAngle);
-      decimator->SetIncludeBackground(false);
-      decimator->SetMeasureOutput(true);
-      decimator->SetInputDataObject(0, out.Initial);
-      decimator->SetInputDataObject(1, run->Image);
-      context.Start = kMesherShare;
-      context.Share = 1.0 - kMesherShare;
-      run->Error = UpdateFilter(decimator, context, out.Warning);
-      run->Aborted = decimator->GetAbortExecute() != 0;
-      if (!run->Error.isEmpty() || run->Aborted)
+    const bool decimate = run->Settings.Decimate;
+    // Runs in this worker thread, on each progress report of the running filter.
+    const labelmesher_cli::FilterProgress progress = [this, run, decimate](
+                                                       vtkAlgorithm* running, double fraction, const std::string& stage) {
+      if (run->CancelRequested.load())
       {
-        return;
+        running->SetAbortExecute(1); // read by the filter right after this report
       }
-      out.Mesh = CopyOf(decimator->GetOutput());
-      out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
-    }
-    if (out.Mesh->GetNumberOfCells() == 0)
+      const bool decimating = vtkMeshDecimator::SafeDownCast(running) != nullptr;
+      const double whole = !decimate ? fraction
+        : decimating                 ? kMesherShare + (1.0 - kMesherShare) * fraction
+                                     : kMesherShare * fraction;
+      run->Fraction = whole;
+      // Queued to the window's thread; a few hundred signals per run at most.
+      if (whole - run->LastSent >= 0.005 || whole >= 1.0)
+      {
+        run->LastSent = whole;
+        emit this->progressed(whole, QString::fromStdString(stage));
+      }
+    };
+    try
     {
-      run->Error = tr("the filters produced no cells (is every voxel background?)");
+      run->Outcome = labelmesher_cli::RunMeshingPipeline(run->Image, run->Settings, progress);
     }
-    out.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    catch (const std::exception& e)
+    {
+      run->Error = QString::fromStdString(e.what());
+    }
+    run->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   });
   connect(this->Thread, &QThread::finished, this, &MeshingJob::onThreadFinished);
   this->Thread->start();
@@ -193,19 +125,26 @@ void MeshingJob::onThreadFinished()
   std::shared_ptr<Run> run = std::move(this->Current);
   this->Thread->deleteLater();
   this->Thread = nullptr;
-  if (run->Aborted)
-  {
-    emit cancelled(run->Fraction.load());
-  }
-  else if (!run->Error.isEmpty())
+  if (!run->Error.isEmpty())
   {
     emit failed(run->Error);
+    return;
   }
-  else
+  if (run->Outcome.Aborted)
   {
-    this->Last = run->Outcome;
-    emit finished();
+    emit cancelled(run->Fraction);
+    return;
   }
+  this->Last = run->Outcome;
+  if (this->Last.Initial != this->Last.Mesh)
+  {
+    // Only the mesher's field data (its stage timings) is needed after the run, not its cells.
+    auto initial = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    initial->GetFieldData()->ShallowCopy(this->Last.Initial->GetFieldData());
+    this->Last.Initial = initial;
+  }
+  this->LastSeconds = run->Seconds;
+  emit finished();
 }
 
 } // namespace gui

@@ -4,49 +4,28 @@
 
 /**
  * @file MeshingJob.h
- * One run of vtkLabelOctreeMesher (and vtkMeshDecimator) in a worker thread, so
- * the window stays live: progress arrives as signals in the window's thread,
- * cancel() makes the running filter stop at its next progress report
- * (AbortExecute, set from the worker's own progress observer), and the meshes
- * are handed over only when the thread has finished with them.
+ * One run of the meshing pipeline (MeshingPipeline.h: vtkLabelOctreeMesher and
+ * vtkMeshDecimator) in a worker thread, so the window stays live: progress
+ * arrives as signals in the window's thread, cancel() makes the running filter
+ * stop at its next progress report (AbortExecute, set from the worker's own
+ * progress observer), and the meshes are handed over only when the thread has
+ * finished with them.
  */
 
-#include "vtkSmartPointer.h"
+#include "MeshingPipeline.h"
 
 #include <QObject>
 #include <QString>
 
-#include <atomic>
 #include <memory>
 
 class QThread;
 class vtkImageData;
-class vtkPolyData;
-class vtkUnstructuredGrid;
 
 namespace labelmesher
 {
 namespace gui
 {
-
-/// What a run uses: the filters' parameters (distances in voxels of the smallest spacing).
-struct MeshingSettings
-{
-  double ImageToMeshDistance = 2.0;
-  double MeshToImageDistance = 2.0;
-  bool Decimate = true;
-  double MinimumAngle = 15.0; ///< degrees, the decimator's bound
-};
-
-/// What a finished run made.
-struct MeshingOutcome
-{
-  vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< what is shown and saved
-  vtkSmartPointer<vtkUnstructuredGrid> Initial; ///< the mesher's output (its timings)
-  vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
-  double Seconds = 0.0;
-  QString Warning; ///< the filters' first warning (e.g. a label left out), empty if none
-};
 
 class MeshingJob : public QObject
 {
@@ -58,14 +37,17 @@ public:
   ~MeshingJob() override;
 
   /// Starts meshing `image` (label scalars) with `settings`; false when a run is under way.
-  bool start(vtkImageData* image, const MeshingSettings& settings);
-  /// Asks the running filter to stop; cancelled() follows once it has.
+  bool start(vtkImageData* image, const labelmesher_cli::MeshingSettings& settings);
+  /// Asks the running filter to stop; cancelled() follows once it has (or finished() when the
+  /// request came during a stage that cannot stop, measuring, and the mesh is complete).
   void cancel();
   bool isRunning() const;
-  /// Blocks until the thread has finished (its signal still arrives through the event loop).
+  /// Blocks until the worker has finished (its signal still arrives through the event loop).
   void wait();
-  /// The last finished run's meshes (empty before the first).
-  const MeshingOutcome& outcome() const { return this->Last; }
+  /// The last finished run's meshes (empty before the first); Initial keeps only the mesher's
+  /// field data (its timings) when the mesh was decimated.
+  const labelmesher_cli::MeshingOutcome& outcome() const { return this->Last; }
+  double seconds() const { return this->LastSeconds; } ///< of the last finished run
 
 signals:
   /// fraction in [0, 1] of the whole run; stage: the running filter's stage.
@@ -81,7 +63,8 @@ private:
 
   QThread* Thread = nullptr;
   std::shared_ptr<Run> Current;
-  MeshingOutcome Last;
+  labelmesher_cli::MeshingOutcome Last;
+  double LastSeconds = 0.0;
 };
 
 } // namespace gui

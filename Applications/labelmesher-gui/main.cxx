@@ -6,7 +6,7 @@
  */
 
 #include "MainWindow.h"
-#include "VTKMessages.h"
+#include "MpiSession.h"
 
 #include "QVTKOpenGLNativeWidget.h"
 
@@ -19,12 +19,14 @@
 
 int main(int argc, char* argv[])
 {
+  const labelmesher::gui::MpiSession mpi; // before any worker thread meshes
   // VTK's OpenGL needs its surface format set before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   QApplication::setApplicationName("labelmesher-gui");
   QApplication::setApplicationVersion(LABELMESHER_VERSION);
-  labelmesher_cli::SilenceVTKOutputWindow();
+  // VTK's output window stays: the filters' errors and warnings are caught by the run
+  // (FilterRun.h); what else VTK reports (an OpenGL failure) goes to stderr.
   itk::Object::GlobalWarningDisplayOff(); // ITK's warnings; its errors arrive as exceptions
 
   QCommandLineParser parser;

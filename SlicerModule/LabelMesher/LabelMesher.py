@@ -225,6 +225,7 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
         if not (node and node.IsA("vtkMRMLColorTableNode") and node.GetName().startswith("LabelMesher materials")):
             node = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLColorTableNode", "LabelMesher materials")
         node.SetTypeToUser()
+        node.SetNumberOfColors(0)  # drop the previous run's entries before refilling
         node.SetNumberOfColors(max([m.label for m in materials] + [0]) + 1)
         node.SetColor(0, "background", 0.0, 0.0, 0.0, 0.0)
         for m in materials:

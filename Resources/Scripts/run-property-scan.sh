@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
-# The long property scan (issue 17): labelmesher_property_scan over 100,000 seeded random images,
-# 2D and 3D, both generators, every distance bound the seeds draw (0..3 voxels each way), through
-# the mesher alone, the decimator and (2D) the curver, in chunks that resume after an interruption.
+# The long property scan (issue 17): labelmesher_property_scan over 130,000 seeded random images,
+# 2D and 3D, the three generators (smooth, boxes, thin features), every distance bound the seeds
+# draw (0..3 voxels each way), through the mesher alone, the decimator and (2D) the curver, in
+# chunks that resume after an interruption.
 #
 #   run-property-scan.sh STATE_DIR [SCAN_BINARY]
 #
@@ -30,6 +31,10 @@ plan=(
   "mesh     smooth 3  5000  250"
   "decimate boxes  3 10000  250"
   "decimate smooth 3  5000  250"
+  "mesh     thin   2 10000 1000"
+  "decimate thin   2 10000 1000"
+  "mesh     thin   3  5000  250"
+  "decimate thin   3  5000  250"
 )
 first_seed=1000000
 

@@ -7,7 +7,7 @@
 // thousands before trusting a change to the mesher's per-leaf tests or the
 // decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan [--decimate|--curve] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
 //
 // --decimate: mesher then decimator, with the angle drawn per seed
 // (DrawDecimationParameters); the decimated mesh must keep every guarantee.
@@ -16,13 +16,15 @@
 // TestCurverProperties.
 // smooth: GenerateRandomLabelImageWithDescription(seed, dimension) (the images
 // of TestMesherProperties' MesherProperties suites); boxes:
-// GenerateRandomBoxImage(seed, dimension, SIZE) (default 24 in 2D, 14 in 3D).
+// GenerateRandomBoxImage(seed, dimension, SIZE) (default 24 in 2D, 14 in 3D);
+// thin: GenerateThinFeatureImage(seed, dimension, SIZE) (default 20 in 2D, 12 in 3D).
 // Distance bounds: DrawDistanceBounds(seed), as in the tests.
 
 #include "CurverGuarantees.h"
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
+#include "ThinFeatureImages.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -42,17 +44,18 @@ int main(int argc, char** argv)
   }
   if (argc < 5)
   {
-    std::fprintf(stderr, "usage: %s [--decimate|--curve] smooth|boxes 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--decimate|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
   const int dimension = std::atoi(argv[2]);
   const std::uint64_t first = std::strtoull(argv[3], nullptr, 10);
   const std::uint64_t count = std::strtoull(argv[4], nullptr, 10);
-  const int size = argc > 5 ? std::atoi(argv[5]) : (dimension == 3 ? 14 : 24);
-  if ((family != "smooth" && family != "boxes") || (dimension != 2 && dimension != 3) || size < 2)
+  const bool thin = family == "thin";
+  const int size = argc > 5 ? std::atoi(argv[5]) : (dimension == 3 ? (thin ? 12 : 14) : (thin ? 20 : 24));
+  if ((family != "smooth" && family != "boxes" && !thin) || (dimension != 2 && dimension != 3) || size < (thin ? 6 : 2))
   {
-    std::fprintf(stderr, "bad arguments: family smooth or boxes, dimension 2 or 3, size >= 2\n");
+    std::fprintf(stderr, "bad arguments: family smooth, boxes or thin, dimension 2 or 3, size >= 2 (thin: >= 6)\n");
     return 2;
   }
   if (curve && dimension != 2)
@@ -66,7 +69,8 @@ int main(int argc, char** argv)
   {
     const testing::RandomLabelImage random = family == "smooth"
       ? testing::GenerateRandomLabelImageWithDescription(seed, dimension)
-      : testing::GenerateRandomBoxImage(seed, dimension, size);
+      : thin ? testing::GenerateThinFeatureImage(seed, dimension, size)
+             : testing::GenerateRandomBoxImage(seed, dimension, size);
     const MesherParameters parameters = testing::DrawDistanceBounds(seed);
     const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, parameters);
     DecimationCounts counts;

@@ -16,6 +16,7 @@
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
+#include "ThinFeatureImages.h"
 
 #include <gtest/gtest.h>
 
@@ -92,6 +93,18 @@ TEST_P(DecimatorBoxImageProperties, AngleConformityHausdorffAndTopologyHold)
     [&](std::uint64_t seed) { return testing::GenerateRandomBoxImage(seed, shard.Dimension, shard.Dimension == 3 ? 14 : 24); });
 }
 
+class DecimatorThinFeatureProperties : public ::testing::TestWithParam<Shard>
+{
+};
+
+TEST_P(DecimatorThinFeatureProperties, AngleConformityHausdorffAndTopologyHold)
+{
+  const Shard shard = GetParam();
+  const int images = shard.Dimension == 3 ? 25 : 100;
+  CheckShard(800000u + 1000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images, images,
+    [&](std::uint64_t seed) { return testing::GenerateThinFeatureImage(seed, shard.Dimension, shard.Dimension == 3 ? 12 : 20); });
+}
+
 std::vector<Shard> Shards(int dimension, int count)
 {
   std::vector<Shard> shards;
@@ -107,6 +120,9 @@ INSTANTIATE_TEST_SUITE_P(TwoD, DecimatorProperties, ::testing::ValuesIn(Shards(2
 INSTANTIATE_TEST_SUITE_P(ThreeD, DecimatorProperties, ::testing::ValuesIn(Shards(3, 8)), ShardName);
 INSTANTIATE_TEST_SUITE_P(TwoD, DecimatorBoxImageProperties, ::testing::ValuesIn(Shards(2, 8)), ShardName);
 INSTANTIATE_TEST_SUITE_P(ThreeD, DecimatorBoxImageProperties, ::testing::ValuesIn(Shards(3, 4)), ShardName);
+// Thin features beside other pieces (ThinFeatureImages.h): 400 in 2D, 100 in 3D.
+INSTANTIATE_TEST_SUITE_P(TwoD, DecimatorThinFeatureProperties, ::testing::ValuesIn(Shards(2, 4)), ShardName);
+INSTANTIATE_TEST_SUITE_P(ThreeD, DecimatorThinFeatureProperties, ::testing::ValuesIn(Shards(3, 4)), ShardName);
 
 } // namespace
 } // namespace labelmesher

@@ -20,6 +20,7 @@
 #include "LabelOctreeMesher.h"
 #include "MesherGuarantees.h"
 #include "RandomLabelImages.h"
+#include "ThinFeatureImages.h"
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,24 @@ TEST_P(BoxImageProperties, AngleConformityHausdorffAndTopologyHold)
   }
 }
 
+class ThinFeatureProperties : public ::testing::TestWithParam<Shard>
+{
+};
+
+TEST_P(ThinFeatureProperties, AngleConformityHausdorffAndTopologyHold)
+{
+  // 2D: 20 x 20 pixels, 3D: 12^3 voxels (ThinFeatureImages.h).
+  const Shard shard = GetParam();
+  const int images = shard.Dimension == 3 ? 50 : 250;
+  for (int i = 0; i < images; ++i)
+  {
+    const std::uint64_t seed = 200000u * shard.Dimension + static_cast<std::uint64_t>(shard.Index) * images + i;
+    CheckGuarantees(testing::GenerateThinFeatureImage(seed, shard.Dimension, shard.Dimension == 3 ? 12 : 20));
+    if (HasFailure())
+      return;
+  }
+}
+
 std::vector<Shard> Shards(int dimension, int count)
 {
   std::vector<Shard> shards;
@@ -151,6 +170,11 @@ INSTANTIATE_TEST_SUITE_P(TwoD, MesherProperties, ::testing::ValuesIn(Shards(2, 1
 INSTANTIATE_TEST_SUITE_P(TwoD, BoxImageProperties, ::testing::ValuesIn(Shards(2, 8)),
   [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
 INSTANTIATE_TEST_SUITE_P(ThreeD, BoxImageProperties, ::testing::ValuesIn(Shards(3, 4)),
+  [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
+// Thin features beside other pieces: 1,000 in 2D and 200 in 3D.
+INSTANTIATE_TEST_SUITE_P(TwoD, ThinFeatureProperties, ::testing::ValuesIn(Shards(2, 4)),
+  [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
+INSTANTIATE_TEST_SUITE_P(ThreeD, ThinFeatureProperties, ::testing::ValuesIn(Shards(3, 4)),
   [](const ::testing::TestParamInfo<Shard>& info) { return "shard" + std::to_string(info.param.Index); });
 
 } // namespace

@@ -3,6 +3,7 @@
 // inputs) and SyntheticShapes (analytic shapes, the Cassini benchmark volume).
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
+#include "ThinFeatureImages.h"
 
 #include <gtest/gtest.h>
 
@@ -317,6 +318,74 @@ TEST(ThinStructureDetector, FindsSheetsButNotSlabs)
 }
 
 // ---- SyntheticShapes -----------------------------------------------------------
+
+/// true if two voxels of one non-zero label lie two apart along an axis with a voxel of another
+/// label (or background) between them: a one-voxel gap between pieces of the same label.
+bool HasOneVoxelGapWithinALabel(const LabelImage& image)
+{
+  const auto& d = image.Dimensions;
+  for (int k = 0; k < d[2]; ++k)
+    for (int j = 0; j < d[1]; ++j)
+      for (int i = 0; i < d[0]; ++i)
+      {
+        const std::int32_t l = image.At(i, j, k);
+        if (l == 0)
+          continue;
+        const int step[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+        for (const auto& e : step)
+          if (image.At(i + 2 * e[0], j + 2 * e[1], k + 2 * e[2]) == l && image.At(i + e[0], j + e[1], k + e[2]) != l &&
+            image.Contains(i + 2 * e[0], j + 2 * e[1], k + 2 * e[2]))
+            return true;
+      }
+  return false;
+}
+
+TEST(ThinFeatureImages, SameSeedSameImageAndSeedsDiffer)
+{
+  for (int dimension : { 2, 3 })
+  {
+    std::set<std::uint64_t> checksums;
+    for (std::uint64_t seed = 0; seed < 50; ++seed)
+    {
+      const RandomLabelImage a = GenerateThinFeatureImage(seed, dimension, 12);
+      const RandomLabelImage b = GenerateThinFeatureImage(seed, dimension, 12);
+      EXPECT_EQ(LabelImageChecksum(a.Image), LabelImageChecksum(b.Image)) << "seed " << seed;
+      EXPECT_EQ(a.Describe(), b.Describe());
+      checksums.insert(LabelImageChecksum(a.Image));
+    }
+    EXPECT_GE(checksums.size(), 45u) << "dimension " << dimension;
+  }
+}
+
+TEST(ThinFeatureImages, ThinFeaturesOneVoxelFromOtherPiecesAreCommon)
+{
+  // What the generator is for: counted over 200 seeds each, so a change that loses them fails.
+  for (int dimension : { 2, 3 })
+  {
+    int thin = 0, gapWithinLabel = 0, gapOfThirdLabel = 0, corner = 0;
+    for (std::uint64_t seed = 0; seed < 200; ++seed)
+    {
+      const RandomLabelImage r = GenerateThinFeatureImage(seed, dimension, dimension == 3 ? 12 : 20);
+      ASSERT_FALSE(PresentLabels(r.Image).empty()) << r.Describe();
+      for (std::int32_t l : PresentLabels(r.Image))
+        EXPECT_TRUE(l == 1 || l == 2 || l == 3 || l == 5) << r.Describe();
+      thin += HasOneVoxelThickStructure(r.Image);
+      gapWithinLabel += HasOneVoxelGapWithinALabel(r.Image);
+      gapOfThirdLabel += r.Describe().find("gap label=5") != std::string::npos;
+      corner += r.Describe().find("corner label=") != std::string::npos;
+    }
+    EXPECT_GE(thin, 140) << "dimension " << dimension;
+    EXPECT_GE(gapWithinLabel, 60) << "dimension " << dimension;
+    EXPECT_GE(gapOfThirdLabel, 30) << "dimension " << dimension;
+    EXPECT_GE(corner, 50) << "dimension " << dimension;
+  }
+}
+
+TEST(ThinFeatureImages, RefusesBadArguments)
+{
+  EXPECT_THROW(GenerateThinFeatureImage(1, 4, 12), std::invalid_argument);
+  EXPECT_THROW(GenerateThinFeatureImage(1, 3, 5), std::invalid_argument);
+}
 
 TEST(SyntheticShapes, DiscAndEllipseAreasMatch)
 {

@@ -87,6 +87,7 @@ inline void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
     std::ifstream in(path, std::ios::binary);
     std::string line;
     bool raw = false;
+    bool compressed = false; // MetaImage: CompressedData = True (raw otherwise, whatever the order)
     while (std::getline(in, line) && !line.empty() && line != "\r")
     {
       const std::string l = Lower(line);
@@ -94,13 +95,13 @@ inline void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
       {
         raw = l.find("raw") != std::string::npos;
       }
-      if (l.rfind("compresseddata", 0) == 0)
+      if (l.rfind("compresseddata ", 0) == 0 || l.rfind("compresseddata=", 0) == 0)
       {
-        raw = l.find("false") != std::string::npos;
+        compressed = l.find("true") != std::string::npos;
       }
       if (l.rfind("elementdatafile", 0) == 0)
       {
-        raw = raw || EndsWith(lower, ".mha");
+        raw = EndsWith(lower, ".mha") ? !compressed : raw;
         if (l.find("local") == std::string::npos)
         {
           return; // detached data file
@@ -182,11 +183,21 @@ inline InputError ITKReadError(const std::string& path, const itk::ExceptionObje
 {
   std::string what = e.GetDescription();
   what.erase(std::remove(what.begin(), what.end(), '\n'), what.end());
-  // ITK's "ITK ERROR: Class(0x55...): " prefix names an object, not the problem.
+  // ITK's "itk::ERROR: Class(0x55...): " prefix names an object, not the problem.
   const std::size_t prefix = what.find("): ");
-  if (what.rfind("ITK ERROR: ", 0) == 0 && prefix != std::string::npos)
+  if ((what.rfind("ITK ERROR: ", 0) == 0 || what.rfind("itk::ERROR: ", 0) == 0) && prefix != std::string::npos)
   {
     what = what.substr(prefix + 3);
+  }
+  // NrrdIO chains its callers' complaints ("... [nrrd] nrrdLoad: trouble ... [nrrd] fn: reason");
+  // the last link says what is wrong with the file.
+  const std::size_t last = what.rfind("[nrrd] ");
+  if (last != std::string::npos)
+  {
+    std::string reason = what.substr(last + 7);
+    const std::size_t colon = reason.find(": ");
+    reason = colon == std::string::npos ? reason : reason.substr(colon + 2);
+    return InputError("cannot read '" + path + "': not a valid NRRD file (" + reason + ")");
   }
   return InputError("cannot read '" + path + "': " + what);
 }

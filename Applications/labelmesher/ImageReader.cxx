@@ -121,6 +121,16 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (!io)
   {
+    // A known extension whose reader refuses the content: say which format the file fails to be.
+    const std::string lower = Lower(path);
+    const char* format = EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr") ? "NRRD"
+      : EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz")                 ? "NIfTI"
+      : EndsWith(lower, ".mha") || EndsWith(lower, ".mhd")                    ? "MetaImage"
+                                                                              : nullptr;
+    if (format)
+    {
+      throw InputError("cannot read '" + path + "': not a valid " + format + " file (its header cannot be read)");
+    }
     throw InputError("'" + path + "' is not an image format labelmesher reads (.nrrd, .nhdr, .nii, "
                                   ".nii.gz, .mha, .mhd, .vti, .png)");
   }

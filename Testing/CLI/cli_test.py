@@ -222,6 +222,28 @@ def case_good_nifti_gz():
     assert abs(report["parameters"]["distance_unit"] - 0.8) < 1e-6
 
 
+def case_compressed_metaimage():
+    """A zlib-compressed MetaImage (CompressedData = True, as ITK writes it): the truncation check
+    took its data for raw and refused it (found seeding the fuzzers); a truncated raw one still fails."""
+    import zlib
+    labels = ball(10, 3.5, 2).astype(np.uint8)
+    body = zlib.compress(labels.tobytes())
+    header = ("ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
+              f"CompressedData = True\nCompressedDataSize = {len(body)}\nTransformMatrix = 1 0 0 0 1 0 0 0 1\n"
+              "Offset = 0 0 0\nElementSpacing = 1 1 1\nDimSize = 10 10 10\nElementType = MET_UCHAR\n"
+              "ElementDataFile = LOCAL\n")
+    with open(path("compressed.mha"), "wb") as f:
+        f.write(header.encode() + body)
+    result = run("mesh", path("compressed.mha"), "-o", path("mha.vtu"), "--report", path("mha.json"))
+    assert result.returncode == 0, result.stderr
+    check_mesh_and_report(path("mha.vtu"), path("mha.json"), VTK_TETRA, {2})
+    raw = header.replace("CompressedData = True", "CompressedData = False").replace(
+        f"CompressedDataSize = {len(body)}\n", "")
+    with open(path("short.mha"), "wb") as f:
+        f.write(raw.encode() + labels.tobytes()[:500])
+    expect_failure(run("mesh", path("short.mha"), "-o", path("out.vtu")), "truncated")
+
+
 def case_negative_spacing():
     # ITK reads a negative spacing as a positive one with the axis direction
     # flipped: the same physical positions. The mesh must land there (at

@@ -256,6 +256,15 @@ def case_plain_errors():
         f.write("1 liver 300 0 0 255\n")
     assert_plain(cli.run("mesh", good, "-o", cli.path("m.vtu"), "--labels", table), "bad_labels.txt")
     assert_plain(cli.run("mesh", good, "-o", cli.path("m.vtu"), "--labels", cli.path("nothing.txt")), "nothing.txt")
+    # Found by seeding the fuzzers: NrrdIO's chained complaint and a gzip stream under .nii.
+    bad_type = cli.path("bad_type.nrrd")
+    with open(bad_type, "wb") as f:
+        f.write(b"NRRD0004\ntype: float32\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n" + bytes(32))
+    assert_plain(cli.run("mesh", bad_type, "-o", cli.path("m.vtu")), 'not a valid NRRD file (couldn\'t parse type "float32")')
+    gz_as_nii = cli.path("gzip_content.nii")
+    with open(cli.write_nifti("real.nii.gz", cli.ball(8, 2.5).astype(np.uint8)), "rb") as f, open(gz_as_nii, "wb") as g:
+        g.write(f.read())
+    assert_plain(cli.run("mesh", gz_as_nii, "-o", cli.path("m.vtu")), "not a valid NIfTI file")
     print("OK: plain one-line errors")
 
 

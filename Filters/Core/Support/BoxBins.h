@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -56,7 +57,13 @@ public:
 
 private:
   long Bin(double x) const { return static_cast<long>(std::floor(x / Cell)); }
-  static long long Key(long x, long y) { return (static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL); }
+  /// x in the high 32 bits, y in the low ones. Shifted as unsigned: shifting a negative bin
+  /// index left is undefined before C++20 (UBSan found it); the keys are the same bits as before.
+  static long long Key(long x, long y)
+  {
+    const std::uint64_t high = static_cast<std::uint32_t>(x), low = static_cast<std::uint32_t>(y);
+    return static_cast<long long>((high << 32) | low);
+  }
 
   double Cell;
   std::unordered_map<long long, std::vector<std::size_t>> Bins;

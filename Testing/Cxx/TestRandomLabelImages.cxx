@@ -317,8 +317,10 @@ TEST(ThinStructureDetector, FindsSheetsButNotSlabs)
   EXPECT_FALSE(HasForegroundOnBorder(sheet));
 }
 
-// ---- SyntheticShapes -----------------------------------------------------------
+// ---- ThinFeatureImages ---------------------------------------------------------
 
+namespace
+{
 /// true if two voxels of one non-zero label lie two apart along an axis with a voxel of another
 /// label (or background) between them: a one-voxel gap between pieces of the same label.
 bool HasOneVoxelGapWithinALabel(const LabelImage& image)
@@ -339,6 +341,7 @@ bool HasOneVoxelGapWithinALabel(const LabelImage& image)
       }
   return false;
 }
+} // namespace
 
 TEST(ThinFeatureImages, SameSeedSameImageAndSeedsDiffer)
 {
@@ -386,6 +389,8 @@ TEST(ThinFeatureImages, RefusesBadArguments)
   EXPECT_THROW(GenerateThinFeatureImage(1, 4, 12), std::invalid_argument);
   EXPECT_THROW(GenerateThinFeatureImage(1, 3, 5), std::invalid_argument);
 }
+
+// ---- SyntheticShapes -----------------------------------------------------------
 
 TEST(SyntheticShapes, DiscAndEllipseAreasMatch)
 {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,31 @@ struct GatherLabels
   }
 };
 
+} // namespace
+
+double ResampledVoxels(const int dims[3], const double spacing[3])
+{
+  int normal = -1;
+  for (int a = 2; a >= 0 && normal < 0; --a)
+  {
+    normal = dims[a] == 1 ? a : -1;
+  }
+  double h = std::numeric_limits<double>::max();
+  for (int a = 0; a < 3; ++a)
+  {
+    h = a == normal ? h : std::min(h, std::abs(spacing[a]));
+  }
+  double voxels = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    voxels *= a == normal ? 1.0 : std::max(1.0, std::round(dims[a] * std::abs(spacing[a]) / h));
+  }
+  return voxels;
+}
+
+namespace
+{
+
 /// Builds the LabelImage (x fastest) from the gathered labels of an image with
 /// point dimensions `dims`, permuting a single-slice image into the x-y plane and
 /// resampling to isotropic voxels of the smallest (in-plane) spacing.
@@ -193,7 +219,7 @@ LabelImage PlaceLabels(const std::vector<std::int32_t>& labels, const int dims[3
     // Keep the physical span of the voxels, [-s/2, (n - 1/2) s], and tile it
     // with voxels of size h; voxel j samples the old voxel under its centre.
     const double ratio = std::abs(s) / h;
-    newDims[a] = std::max(1, static_cast<int>(std::lround(n * ratio)));
+    newDims[a] = std::max(1, static_cast<int>(std::lround(n * ratio))); // bounded: ResampledVoxels
     placement.Start[a] = extent[2 * axis] * s + sign * 0.5 * (h - std::abs(s));
     placement.Step[a] = sign * h;
     source[a].resize(newDims[a]);
@@ -294,6 +320,18 @@ bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& i
     return false;
   }
 
+  // Resampling very anisotropic voxels to cubes of the smallest spacing can ask for more voxels
+  // than memory holds (1 x 1 x 1e-6 mm; found by fuzzing): refuse it in one sentence instead.
+  const double resampled = ResampledVoxels(dims, spacing);
+  if (resampled > kMaximumResampledVoxels)
+  {
+    std::ostringstream s;
+    s << "Spacing " << spacing[0] << " x " << spacing[1] << " x " << spacing[2]
+      << " is too anisotropic: resampling to cubes of the smallest spacing would need " << resampled
+      << " voxels (at most " << kMaximumResampledVoxels << ")";
+    error = s.str();
+    return false;
+  }
   input->GetOrigin(placement.Origin);
   std::copy(input->GetDirectionMatrix()->GetData(), input->GetDirectionMatrix()->GetData() + 9,
     placement.Direction);

@@ -47,9 +47,18 @@ struct ImagePlacement
   bool ReversesOrientation() const;
 };
 
+/// The voxel count of the image ConvertLabelImage builds from point dimensions `dims` and
+/// `spacing`: resampled to cubes of the smallest spacing along the meshed axes (a single-slice
+/// axis is not meshed).
+double ResampledVoxels(const int dims[3], const double spacing[3]);
+
+/// The most voxels the isotropic resampling of an anisotropic image may create (2^31 - 1: the
+/// labels alone would take 8 GiB); beyond it ConvertLabelImage refuses the image.
+inline constexpr double kMaximumResampledVoxels = 2147483647.0;
+
 /// Validates `input` and its label array `scalars` (integer type, one component,
 /// point data, labels in [0, 2^31), finite non-zero spacing, non-empty extent,
-/// some foreground) and converts it. Returns false with a one-sentence reason
+/// some foreground, a resampled size within kMaximumResampledVoxels) and converts it. Returns false with a one-sentence reason
 /// in `error` (no trailing period) when the image cannot be meshed.
 bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& image,
   ImagePlacement& placement, std::string& error);

@@ -15,6 +15,7 @@ packages=(
   libp4est-dev mpi-default-dev        # the octree (p4est 2.2, GPL-2.0-or-later) and the MPI it is built against
   libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
   libcgal-dev                          # baseline comparisons in the benchmarks
+  clang libclang-rt-14-dev             # the libFuzzer targets (run-fuzzers.sh)
   python3-numpy                        # Python tests
   xvfb xauth libgl1-mesa-dri           # offscreen pictures (mesh_picture.py): Debian's VTK renders through GLX only
   python3-meshio gmsh                  # independent readers of the mesh files in the tests (meshio, gmsh -check)

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// libFuzzer target: the CLI's label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary
+// bytes, saved under a name ending in LABELMESHER_FUZZ_EXTENSION (.nrrd, .nii, .mha, .vti, .png,
+// .seg.nrrd: one target each). Every input must give a checked image or an InputError; any other
+// exception, a crash, a hang or a sanitizer report is a finding, and so is an image the checks
+// should have refused (not one integer component named Labels, or fewer values than voxels).
+#include "ImageReader.h"
+#include "VTKMessages.h"
+
+#include "itkObject.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace
+{
+std::string& InputPath()
+{
+  static std::string path;
+  return path;
+}
+
+[[noreturn]] void Finding(const std::string& what)
+{
+  std::fprintf(stderr, "fuzz finding: %s\n", what.c_str());
+  std::abort();
+}
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  labelmesher_cli::SilenceVTKOutputWindow();
+  itk::Object::GlobalWarningDisplayOff();
+  char folder[] = "/tmp/labelmesher-fuzz-XXXXXX";
+  if (!mkdtemp(folder))
+    Finding("cannot create a temporary folder");
+  InputPath() = std::string(folder) + "/input" LABELMESHER_FUZZ_EXTENSION;
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  {
+    std::ofstream out(InputPath(), std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!out)
+      Finding("cannot write " + InputPath());
+  }
+  try
+  {
+    const labelmesher_cli::LabeledImage read = labelmesher_cli::ReadLabeledImage(InputPath());
+    vtkImageData* image = read.Image;
+    vtkDataArray* labels = image ? image->GetPointData()->GetScalars() : nullptr;
+    if (!labels || std::string(labels->GetName() ? labels->GetName() : "") != "Labels")
+      Finding("an image without a Labels array got through");
+    if (labels->GetNumberOfComponents() != 1 || labels->GetNumberOfTuples() != image->GetNumberOfPoints())
+      Finding("an image with other than one value per voxel got through");
+    if (labels->GetDataType() == VTK_FLOAT || labels->GetDataType() == VTK_DOUBLE)
+      Finding("a floating-point label array got through");
+  }
+  catch (const labelmesher_cli::InputError&)
+  {
+    // refused with a message: what malformed input must get
+  }
+  return 0;
+}

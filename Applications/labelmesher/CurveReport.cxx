@@ -3,7 +3,7 @@
 // as JSON.
 #include "CurveReport.h"
 
-#include "Arguments.h"
+#include "MeshingPipeline.h"
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
@@ -51,15 +51,15 @@ bool CurveReport::CurvesFaithful() const
     this->TopologyMatches.value_or(true);
 }
 
-CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkUnstructuredGrid* curved)
+CurveReport MakeCurveReport(const RunReport& linear, const MeshingSettings& settings, vtkUnstructuredGrid* curved)
 {
   CurveReport r;
   r.Linear = linear;
-  r.Smoothness = args.Smoothness;
-  r.Tension = args.Tension;
-  r.MaximumUntanglingSteps = args.MaximumUntanglingSteps;
-  r.MaximumShorteningRounds = args.MaximumShorteningRounds;
-  r.QualityIterations = args.QualityIterations;
+  r.Smoothness = settings.Smoothness;
+  r.Tension = settings.Tension;
+  r.MaximumUntanglingSteps = settings.MaximumUntanglingSteps;
+  r.MaximumShorteningRounds = settings.MaximumShorteningRounds;
+  r.QualityIterations = settings.QualityIterations;
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
   vtkFieldData* fd = curved->GetFieldData();

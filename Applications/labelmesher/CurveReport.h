@@ -60,7 +60,7 @@ struct CurveReport
   bool Valid() const { return this->InvalidCells == 0; }
 };
 
-CurveReport MakeCurveReport(const RunReport& linear, const Arguments& args, vtkUnstructuredGrid* curved);
+CurveReport MakeCurveReport(const RunReport& linear, const MeshingSettings& settings, vtkUnstructuredGrid* curved);
 void PrintCurveSummary(const CurveReport& report, std::ostream& out);
 void WriteCurveJson(const CurveReport& report, std::ostream& out);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MeshingPipeline.h"
 
+#include "vtkBezierCurver.h"
 #include "vtkImageData.h"
 #include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
@@ -26,10 +27,87 @@ vtkSmartPointer<T> CopyOf(T* data)
   copy->ShallowCopy(data);
   return copy;
 }
+
+/// vtkMeshDecimator on the mesher's output (with its background cells) and the image.
+void Decimate(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
+{
+  vtkNew<vtkMeshDecimator> decimator;
+  decimator->SetMinimumAngle(settings.MinimumAngle);
+  decimator->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
+  decimator->SetIncludeBackground(settings.IncludeBackground);
+  decimator->SetMeasureOutput(settings.Measure);
+  decimator->SetInputDataObject(0, out.Initial);
+  decimator->SetInputDataObject(1, image);
+  const FilterMessages messages = UpdateFilter(decimator, progress);
+  if (out.Warning.empty())
+  {
+    out.Warning = messages.Warning;
+  }
+  if (!messages.Error.empty())
+  {
+    throw MeshingError(messages.Error);
+  }
+  if (StoppedOnRequest(decimator, decimator->GetOutput()))
+  {
+    out = MeshingOutcome{};
+    out.Aborted = true;
+    return;
+  }
+  if (decimator->GetOutput()->GetNumberOfCells() == 0)
+  {
+    throw MeshingError(messages.Warning.empty() ? "the decimator produced no cells" : messages.Warning);
+  }
+  out.Mesh = CopyOf(decimator->GetOutput());
+  out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
+}
+
+/// vtkBezierCurver on the final mesh. An untangling failure is an error of the filter that still
+/// outputs the marked mesh: it is kept with the error, for the front end to show or write.
+void Curve(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
+{
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetSmoothness(settings.Smoothness);
+  curver->SetTension(settings.Tension);
+  curver->SetMaximumUntanglingSteps(settings.MaximumUntanglingSteps);
+  curver->SetMaximumShorteningRounds(settings.MaximumShorteningRounds);
+  curver->SetQualityIterations(settings.QualityIterations);
+  curver->SetInputDataObject(0, out.Mesh);
+  curver->SetInputDataObject(1, image);
+  const FilterMessages messages = UpdateFilter(curver, progress);
+  if (out.Warning.empty())
+  {
+    out.Warning = messages.Warning;
+  }
+  if (StoppedOnRequest(curver, curver->GetOutput()))
+  {
+    out = MeshingOutcome{};
+    out.Aborted = true;
+    return;
+  }
+  if (curver->GetOutput()->GetNumberOfCells() == 0)
+  {
+    throw MeshingError(!messages.Error.empty() ? messages.Error
+        : messages.Warning.empty()             ? "the curver produced no cells"
+                                               : messages.Warning);
+  }
+  out.CurveError = messages.Error;
+  out.Curved = CopyOf(curver->GetOutput());
+}
 } // namespace
+
+bool IsTwoDimensional(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
+}
 
 MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress)
 {
+  if (settings.Curve && !IsTwoDimensional(image))
+  {
+    throw MeshingError("curving needs a 2D image (one extent of a single slice); this image is 3D");
+  }
   MeshingOutcome out;
   vtkNew<vtkLabelOctreeMesher> mesher;
   mesher->SetImageToMeshDistance(settings.ImageToMeshDistance);
@@ -37,7 +115,7 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetIncludeBackground(settings.Decimate || settings.IncludeBackground);
   mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
   mesher->SetInputData(image);
-  FilterMessages messages = UpdateFilter(mesher, progress);
+  const FilterMessages messages = UpdateFilter(mesher, progress);
   out.Warning = messages.Warning;
   if (!messages.Error.empty())
   {
@@ -55,39 +133,14 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   out.Initial = CopyOf(mesher->GetOutput());
   out.Mesh = out.Initial;
   out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
-  if (!settings.Decimate)
+  if (settings.Decimate)
   {
-    return out;
+    Decimate(image, settings, progress, out);
   }
-
-  vtkNew<vtkMeshDecimator> decimator;
-  decimator->SetMinimumAngle(settings.MinimumAngle);
-  decimator->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
-  decimator->SetIncludeBackground(settings.IncludeBackground);
-  decimator->SetMeasureOutput(settings.Measure);
-  decimator->SetInputDataObject(0, out.Initial);
-  decimator->SetInputDataObject(1, image);
-  messages = UpdateFilter(decimator, progress);
-  if (out.Warning.empty())
+  if (settings.Curve && !out.Aborted)
   {
-    out.Warning = messages.Warning;
+    Curve(image, settings, progress, out);
   }
-  if (!messages.Error.empty())
-  {
-    throw MeshingError(messages.Error);
-  }
-  if (StoppedOnRequest(decimator, decimator->GetOutput()))
-  {
-    out = MeshingOutcome{};
-    out.Aborted = true;
-    return out;
-  }
-  if (decimator->GetOutput()->GetNumberOfCells() == 0)
-  {
-    throw MeshingError(messages.Warning.empty() ? "the decimator produced no cells" : messages.Warning);
-  }
-  out.Mesh = CopyOf(decimator->GetOutput());
-  out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
   return out;
 }
 

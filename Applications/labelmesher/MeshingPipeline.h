@@ -6,7 +6,8 @@
  * @file MeshingPipeline.h
  * The pipeline both front ends run: vtkLabelOctreeMesher, then (by default)
  * vtkMeshDecimator on the mesher's whole box, which needs the background cells
- * and measures the final mesh itself (so the mesher does not measure).
+ * and measures the final mesh itself (so the mesher does not measure), then
+ * (2D images, on request) vtkBezierCurver on that mesh with the image.
  */
 
 #include "FilterRun.h"
@@ -38,6 +39,13 @@ struct MeshingSettings
   bool RelocateInteriorVertices = true;
   bool IncludeBackground = false;   ///< keep background cells in the final mesh
   bool Measure = true;              ///< measure the final mesh (angles, distances, topology)
+  // vtkBezierCurver (`labelmesher curve`): 2D images only; its defaults
+  bool Curve = false;
+  int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)
+  double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless, [0, 1]
+  int MaximumUntanglingSteps = 64;
+  int MaximumShorteningRounds = 8;
+  int QualityIterations = 0;
 };
 
 struct MeshingOutcome
@@ -45,11 +53,19 @@ struct MeshingOutcome
   vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the final mesh
   vtkSmartPointer<vtkUnstructuredGrid> Initial; ///< the mesher's output (Mesh itself without decimation)
   vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
+  /// With Curve: the cubic Bezier mesh curved from Mesh. When CurveError is set (untangling
+  /// failed) it is the curver's marked mesh (cell data Valid), to inspect, not to use.
+  vtkSmartPointer<vtkUnstructuredGrid> Curved;
+  std::string CurveError;
   std::string Warning;                          ///< the filters' first warning, empty if none
   bool Aborted = false; ///< a filter stopped on request (AbortExecute); the meshes are then null
 };
 
-/// Runs the pipeline on `image`; `progress` sees each filter's own progress. Throws MeshingError.
+/// True when one of the image's extents is a single slice (what the curver needs).
+bool IsTwoDimensional(vtkImageData* image);
+
+/// Runs the pipeline on `image`; `progress` sees each filter's own progress. Throws MeshingError
+/// (also for Curve on a 3D image, and when the curver produced no cells).
 MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress);
 
 } // namespace labelmesher_cli

@@ -3,7 +3,7 @@
 // JSON.
 #include "Report.h"
 
-#include "Arguments.h"
+#include "MeshingPipeline.h"
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
@@ -75,17 +75,16 @@ void AppendTimings(vtkFieldData* fd, std::vector<std::pair<std::string, double>>
 
 } // namespace
 
-RunReport MakeReport(
-  const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial)
+RunReport MakeReport(const std::string& input, const MeshingSettings& settings, vtkImageData* image,
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial)
 {
   RunReport r;
-  r.Input = args.Input;
-  r.Outputs = args.Outputs;
+  r.Input = input;
   image->GetDimensions(r.Dimensions.data());
   image->GetSpacing(r.Spacing.data());
-  r.IncludeBackground = args.IncludeBackground;
-  r.ImageToMeshBound = args.ImageToMeshDistance;
-  r.MeshToImageBound = args.MeshToImageDistance;
+  r.IncludeBackground = settings.IncludeBackground;
+  r.ImageToMeshBound = settings.ImageToMeshDistance;
+  r.MeshToImageBound = settings.MeshToImageDistance;
   r.MeshDimension = (r.Dimensions[0] == 1 || r.Dimensions[1] == 1 || r.Dimensions[2] == 1) ? 2 : 3;
 
   r.Points = mesh->GetNumberOfPoints();

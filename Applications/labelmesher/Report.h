@@ -28,7 +28,7 @@ class vtkUnstructuredGrid;
 namespace labelmesher_cli
 {
 
-struct Arguments;
+struct MeshingSettings;
 class JsonWriter;
 
 struct TopologyEntry
@@ -89,8 +89,9 @@ std::string FormatFixed(double value, int digits);
 /// Collects the figures of a finished run: `mesh` is what was written (the
 /// decimator's output, or the mesher's with --no-decimate), `initial` the
 /// mesher's output (its stage timings come first).
-RunReport MakeReport(
-  const Arguments& args, vtkImageData* image, vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
+/// The report of a run of `settings` on `image` read from `input`; Outputs is left to the caller.
+RunReport MakeReport(const std::string& input, const MeshingSettings& settings, vtkImageData* image,
+  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
 void PrintSummary(const RunReport& report, std::ostream& out);
 /// "a.vtu, b.msh"
 std::string OutputList(const RunReport& report);

@@ -9,7 +9,6 @@
 #include "Arguments.h"
 #include "ColorTableReader.h"
 #include "CurveReport.h"
-#include "FilterRun.h"
 #include "ImageReader.h"
 #include "MeshingPipeline.h"
 #include "ProgressBar.h"
@@ -22,9 +21,7 @@
 
 #include "itkObject.h"
 
-#include "vtkBezierCurver.h"
 #include "vtkImageData.h"
-#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -80,20 +77,6 @@ void CheckOutputPaths(const Arguments& args)
   }
 }
 
-/// Runs `algorithm` with a progress bar; throws RunError with its first error.
-/// Returns its first warning (empty if none).
-std::string UpdateWithProgress(vtkAlgorithm* algorithm, bool quiet)
-{
-  TerminalProgress bar(!quiet);
-  const FilterMessages messages = UpdateFilter(algorithm, bar.Function());
-  bar.Finish();
-  if (!messages.Error.empty())
-  {
-    throw RunError(messages.Error);
-  }
-  return messages.Warning;
-}
-
 template <typename Report, typename Writer>
 void WriteReport(const std::string& path, const Report& report, Writer write)
 {
@@ -104,13 +87,6 @@ void WriteReport(const std::string& path, const Report& report, Writer write)
   labelmesher::io::SafeFile file(path);
   write(report, file.Stream());
   file.Commit();
-}
-
-bool IsTwoDimensional(vtkImageData* image)
-{
-  int dims[3];
-  image->GetDimensions(dims);
-  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
 }
 
 int Run(const Arguments& args)
@@ -153,26 +129,32 @@ int Run(const Arguments& args)
   settings.RelocateInteriorVertices = args.Relocate;
   settings.IncludeBackground = args.IncludeBackground;
   settings.Measure = args.Measure;
+  settings.Curve = curve;
+  settings.Smoothness = args.Smoothness;
+  settings.Tension = args.Tension;
+  settings.MaximumUntanglingSteps = args.MaximumUntanglingSteps;
+  settings.MaximumShorteningRounds = args.MaximumShorteningRounds;
+  settings.QualityIterations = args.QualityIterations;
   TerminalProgress bars(!args.Quiet);
   const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
   bars.Finish();
-  vtkUnstructuredGrid* initial = meshed.Initial;
-  vtkUnstructuredGrid* mesh = meshed.Mesh;
-  vtkPolyData* interfaces = meshed.Interfaces;
-  if (meshed.Aborted || !mesh)
+  if (meshed.Aborted || !meshed.Mesh)
   {
     throw RunError("meshing was aborted");
   }
 
+  const auto writeStart = std::chrono::steady_clock::now();
+  // The curved mesh is written without interfaces (its boundaries are the curves).
+  const std::vector<std::string> written = curve
+    ? WriteOutputs(args, meshed.Curved, nullptr, table)
+    : WriteOutputs(args, meshed.Mesh, meshed.Interfaces, table);
+  RunReport report = MakeReport(args.Input, settings, image, meshed.Mesh, meshed.Initial);
+  report.Outputs = written;
+  report.Materials = table;
+  report.Notes = input.Notes;
+  report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
   if (!curve)
   {
-    const auto writeStart = std::chrono::steady_clock::now();
-    const std::vector<std::string> written = WriteOutputs(args, mesh, interfaces, table);
-    RunReport report = MakeReport(args, image, mesh, initial);
-    report.Outputs = written;
-    report.Materials = table;
-    report.Notes = input.Notes;
-    report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
     report.Timings.emplace_back("write", Seconds(writeStart));
     WriteReport(args.Report, report, WriteJson);
     if (!args.Quiet)
@@ -182,49 +164,19 @@ int Run(const Arguments& args)
     return 0;
   }
 
-  vtkNew<vtkBezierCurver> curver;
-  curver->SetSmoothness(args.Smoothness);
-  curver->SetTension(args.Tension);
-  curver->SetMaximumUntanglingSteps(args.MaximumUntanglingSteps);
-  curver->SetMaximumShorteningRounds(args.MaximumShorteningRounds);
-  curver->SetQualityIterations(args.QualityIterations);
-  curver->SetInputData(mesh);
-  curver->SetInputDataObject(1, image);
-  // An untangling failure is an error of the filter that still outputs the
-  // marked mesh: write it and the report, then fail.
-  std::string failure;
-  try
-  {
-    UpdateWithProgress(curver, args.Quiet);
-  }
-  catch (const RunError& e)
-  {
-    failure = e.what();
-  }
-  vtkUnstructuredGrid* curved = curver->GetOutput();
-  if (curved->GetNumberOfCells() == 0)
-  {
-    throw RunError(failure.empty() ? "the curver produced no cells" : failure);
-  }
-  const auto writeStart = std::chrono::steady_clock::now();
-  const std::vector<std::string> written = WriteOutputs(args, curved, nullptr, table);
-  RunReport linear = MakeReport(args, image, mesh, initial);
-  linear.Outputs = written;
-  linear.Materials = table;
-  linear.Notes = input.Notes;
-  linear.Timings.insert(linear.Timings.begin(), { "read", readSeconds });
-  CurveReport report = MakeCurveReport(linear, args, curved);
-  report.Timings.emplace_back("write", Seconds(writeStart));
-  WriteReport(args.Report, report, WriteCurveJson);
+  CurveReport curved = MakeCurveReport(report, settings, meshed.Curved);
+  curved.Timings.emplace_back("write", Seconds(writeStart));
+  WriteReport(args.Report, curved, WriteCurveJson);
   if (!args.Quiet)
   {
-    PrintCurveSummary(report, std::cout);
+    PrintCurveSummary(curved, std::cout);
   }
-  if (!failure.empty())
+  // An untangling failure leaves the marked mesh, written above for inspection.
+  if (!meshed.CurveError.empty())
   {
-    throw RunError(failure);
+    throw RunError(meshed.CurveError);
   }
-  if (!report.CurvesFaithful())
+  if (!curved.CurvesFaithful())
   {
     throw RunError("the curved mesh breaks a distance bound, crosses an interface or changes the topology "
                    "(see the report); it is written for inspection");

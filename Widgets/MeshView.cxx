@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MeshView.h"
 
+#include "CurvedEdges.h"
+
 #include "LabelMesherArrayNames.h"
 
 #include "QVTKOpenGLNativeWidget.h"
@@ -101,6 +103,11 @@ MeshView::MeshView(QWidget* parent)
   this->Actor->GetProperty()->SetEdgeColor(0.15, 0.15, 0.15);
   this->Actor->SetVisibility(false);
   this->Renderer->AddActor(this->Actor);
+  this->EdgeActor->SetMapper(this->EdgeMapper);
+  this->EdgeMapper->ScalarVisibilityOff();
+  this->EdgeActor->GetProperty()->SetColor(0.15, 0.15, 0.15);
+  this->EdgeActor->SetVisibility(false);
+  this->Renderer->AddActor(this->EdgeActor);
 
   this->ClipBox = new QCheckBox(tr("Clip"), this);
   this->ClipBox->setObjectName("clip");
@@ -162,9 +169,15 @@ void MeshView::setMesh(vtkUnstructuredGrid* mesh, const std::map<int, QColor>& c
     ++index;
   }
   this->Colours->Build();
+  // A cubic cell subdivided twice (36 flat pieces) looks smooth at any zoom a cell fills; the
+  // pieces' own edges are not drawn, the cells' curved edges are (updateCurvedEdges).
+  this->Curved = HasCurvedCells(mesh);
+  this->Surface->SetNonlinearSubdivisionLevel(this->Curved ? 2 : 1);
+  this->Actor->GetProperty()->SetEdgeVisibility(!this->Curved);
   this->Clip->SetInputData(mesh);
   this->updateClipPlane();
   this->Actor->SetVisibility(true);
+  this->EdgeActor->SetVisibility(this->Curved);
   // A 3D mesh: an oblique view from the front, so it reads as a solid. A flat (2D) mesh: face-on,
   // along its flat axis, which need not be z (a sagittal or coronal slice).
   double bounds[6];
@@ -194,8 +207,10 @@ vtkUnstructuredGrid* MeshView::mesh() const
 void MeshView::clear()
 {
   this->Mesh = nullptr;
+  this->Curved = false;
   this->Clip->RemoveAllInputs();
   this->Actor->SetVisibility(false);
+  this->EdgeActor->SetVisibility(false);
   this->render();
 }
 
@@ -285,6 +300,28 @@ void MeshView::updateClipPlane()
   }
   this->Plane->SetOrigin(origin);
   this->Plane->SetNormal(normal);
+  this->updateCurvedEdges();
+}
+
+void MeshView::updateCurvedEdges()
+{
+  if (!this->Mesh || !this->Curved)
+  {
+    return;
+  }
+  constexpr int kSegmentsPerEdge = 12;
+  this->Clip->Update();
+  this->EdgeMapper->SetInputData(CurvedCellEdges(this->Clip->GetOutput(), kSegmentsPerEdge));
+}
+
+vtkIdType MeshView::drawnEdges()
+{
+  if (!this->Mesh || !this->Curved)
+  {
+    return 0;
+  }
+  auto* edges = vtkPolyData::SafeDownCast(this->EdgeMapper->GetInput());
+  return edges ? edges->GetNumberOfLines() : 0;
 }
 
 vtkIdType MeshView::shownCells()

@@ -7,7 +7,8 @@
  * A 3D view of a labelled mesh (the filters' output): the surface of its cells
  * coloured by the cell array Material, edges drawn, and a clipping plane
  * across one axis that shows whole cells (a crinkle cut, so the tetrahedra
- * inside are seen as they are, not sliced).
+ * inside are seen as they are, not sliced). Curved cells (vtkBezierCurver's
+ * cubic Bezier triangles) are drawn subdivided, with their curved edges.
  */
 
 #include "vtkNew.h"
@@ -64,6 +65,11 @@ public:
   bool clipping() const;
   /// Cells drawn after clipping (all of them when the plane is off).
   vtkIdType shownCells();
+  /// The shown mesh has curved (non-linear) cells, drawn with their curved edges.
+  bool showsCurvedCells() const { return this->Curved; }
+  /// Edges drawn over a curved mesh's cells, each a polyline once (0 for a linear mesh, whose
+  /// edges the cells' surface shows).
+  vtkIdType drawnEdges();
 
   /// The picture as it is on screen (renders first).
   QImage grabPicture();
@@ -73,6 +79,7 @@ signals:
 
 private:
   void updateClipPlane();
+  void updateCurvedEdges();
   void render();
 
   QVTKOpenGLNativeWidget* View = nullptr;
@@ -89,6 +96,9 @@ private:
   vtkNew<vtkPolyDataMapper> Mapper;
   vtkNew<vtkLookupTable> Colours;
   vtkNew<vtkActor> Actor;
+  vtkNew<vtkPolyDataMapper> EdgeMapper; ///< curved meshes: their cells' edges, sampled
+  vtkNew<vtkActor> EdgeActor;
+  bool Curved = false;
 };
 
 } // namespace widgets

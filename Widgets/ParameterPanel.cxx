@@ -99,6 +99,14 @@ ParameterPanel::ParameterPanel(QWidget* parent)
                                 "Without decimation the proven bounds are 30 (3D) and 45 (2D) degrees."));
   form->addRow(tr("Minimum angle"), this->AngleBox);
 
+  this->CurveBox = new QCheckBox(tr("Curve (2D)"), this);
+  this->CurveBox->setObjectName(QStringLiteral("curve"));
+  this->CurveBox->setToolTip(tr("2D images: turn the mesh into cubic Bezier triangles whose interfaces "
+                                "follow the image smoothly. Guarantee: every curved cell valid (Bernstein "
+                                "bound of its Jacobian), both distance bounds, no crossing interfaces, "
+                                "the topology kept. Saved as .vtu or .vtk only."));
+  form->addRow(QString(), this->CurveBox);
+
   this->SmoothnessBox = new QComboBox(this);
   this->SmoothnessBox->setObjectName(QStringLiteral("smoothness"));
   this->SmoothnessBox->addItems({ tr("C1 (tangents continuous)"), tr("C2 (curvature continuous)") });
@@ -135,6 +143,11 @@ ParameterPanel::ParameterPanel(QWidget* parent)
     emit minimumAngleChanged(degrees);
     emit parametersChanged();
   });
+  connect(this->CurveBox, &QCheckBox::toggled, this, [this](bool on) {
+    this->enableCurverControls();
+    emit curveChanged(on);
+    emit parametersChanged();
+  });
   connect(this->SmoothnessBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int index) {
     emit smoothnessChanged(index + 1);
     emit parametersChanged();
@@ -153,9 +166,15 @@ void ParameterPanel::setImageGeometry(int dimension, double smallestSpacing)
   this->Dimension = dimension == 2 ? 2 : 3;
   this->SmallestSpacing = std::isfinite(smallestSpacing) && smallestSpacing > 0.0 ? smallestSpacing : 1.0;
   this->AngleBox->setMaximum(this->maximumAngle()); // clamps (and signals) a 2D bound above 30 in 3D
-  this->SmoothnessBox->setEnabled(this->Dimension == 2);
-  this->TensionBox->setEnabled(this->Dimension == 2);
+  this->enableCurverControls();
   this->showDistances();
+}
+
+void ParameterPanel::enableCurverControls()
+{
+  this->CurveBox->setEnabled(this->Dimension == 2);
+  this->SmoothnessBox->setEnabled(this->curve());
+  this->TensionBox->setEnabled(this->curve());
 }
 
 double ParameterPanel::displayScale() const
@@ -253,6 +272,16 @@ void ParameterPanel::setMinimumAngle(double degrees)
 {
   if (std::isfinite(degrees))
     this->AngleBox->setValue(degrees); // clamped to [1, maximumAngle()]
+}
+
+bool ParameterPanel::curve() const
+{
+  return this->Dimension == 2 && this->CurveBox->isChecked();
+}
+
+void ParameterPanel::setCurve(bool on)
+{
+  this->CurveBox->setChecked(on);
 }
 
 int ParameterPanel::smoothness() const

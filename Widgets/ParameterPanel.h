@@ -6,8 +6,8 @@
  * @file ParameterPanel.h
  * A Qt5 panel for the parameters of vtkLabelOctreeMesher, vtkMeshDecimator and
  * vtkBezierCurver: the two distance bounds (shown in voxels of the smallest
- * spacing or in mm), the decimator's angle bound, the curver's smoothness and
- * tension, and presets. Every value is a Q_PROPERTY with a change signal; the
+ * spacing or in mm), the decimator's angle bound, whether to curve (2D images)
+ * and the curver's smoothness and tension, and presets. Every value is a Q_PROPERTY with a change signal; the
  * distance properties are always in voxels (the filters' unit), whatever the
  * display unit. Each control's tooltip states the guarantee it sets.
  */
@@ -36,6 +36,7 @@ class ParameterPanel : public QWidget
   Q_PROPERTY(DistanceUnit distanceUnit READ distanceUnit WRITE setDistanceUnit NOTIFY distanceUnitChanged)
   Q_PROPERTY(bool decimate READ decimate WRITE setDecimate NOTIFY decimateChanged)
   Q_PROPERTY(double minimumAngle READ minimumAngle WRITE setMinimumAngle NOTIFY minimumAngleChanged)
+  Q_PROPERTY(bool curve READ curve WRITE setCurve NOTIFY curveChanged)
   Q_PROPERTY(int smoothness READ smoothness WRITE setSmoothness NOTIFY smoothnessChanged)
   Q_PROPERTY(double tension READ tension WRITE setTension NOTIFY tensionChanged)
   Q_PROPERTY(Preset preset READ preset WRITE setPreset NOTIFY presetChanged)
@@ -60,6 +61,8 @@ public:
   DistanceUnit distanceUnit() const { return this->Unit; }
   bool decimate() const;
   double minimumAngle() const; ///< degrees
+  /// Curve the mesh with vtkBezierCurver: only for 2D images (always false for 3D ones).
+  bool curve() const;
   int smoothness() const;      ///< 1 (C1) or 2 (C2)
   double tension() const;      ///< dimensionless, [0, 1]
   Preset preset() const { return this->CurrentPreset; }
@@ -77,6 +80,7 @@ public slots:
   void setDistanceUnit(DistanceUnit unit);
   void setDecimate(bool on);
   void setMinimumAngle(double degrees);
+  void setCurve(bool on); ///< kept for the next 2D image when the current one is 3D
   void setSmoothness(int continuity);
   void setTension(double tension);
   void setPreset(Preset preset);
@@ -87,6 +91,7 @@ signals:
   void distanceUnitChanged(DistanceUnit unit);
   void decimateChanged(bool on);
   void minimumAngleChanged(double degrees);
+  void curveChanged(bool on);
   void smoothnessChanged(int continuity);
   void tensionChanged(double tension);
   void presetChanged(Preset preset);
@@ -100,6 +105,7 @@ private:
   /// Stores `voxels` in `stored` and emits `changed` when it is a new valid distance.
   void setDistance(double& stored, double voxels, void (ParameterPanel::*changed)(double));
   void markCustom();
+  void enableCurverControls();
 
   int Dimension = 3;
   double SmallestSpacing = 1.0;
@@ -114,6 +120,7 @@ private:
   QDoubleSpinBox* MeshToImageBox = nullptr;
   QCheckBox* DecimateBox = nullptr;
   QDoubleSpinBox* AngleBox = nullptr;
+  QCheckBox* CurveBox = nullptr;
   QComboBox* SmoothnessBox = nullptr;
   QDoubleSpinBox* TensionBox = nullptr;
 };

@@ -2,7 +2,6 @@
 #include "MainWindow.h"
 
 #include "AngleHistogram.h"
-#include "Arguments.h"
 #include "ImageReader.h"
 #include "MeshView.h"
 #include "ParameterPanel.h"
@@ -44,7 +43,22 @@ namespace gui
 namespace
 {
 constexpr int kProgressSteps = 1000;
+
+/// The run the panel describes (the panel sets what a user can choose; the rest are the CLI's
+/// defaults).
+labelmesher_cli::MeshingSettings SettingsOf(const widgets::ParameterPanel& panel)
+{
+  labelmesher_cli::MeshingSettings settings;
+  settings.ImageToMeshDistance = panel.imageToMeshDistance();
+  settings.MeshToImageDistance = panel.meshToImageDistance();
+  settings.Decimate = panel.decimate();
+  settings.MinimumAngle = panel.minimumAngle();
+  settings.Curve = panel.curve();
+  settings.Smoothness = panel.smoothness();
+  settings.Tension = panel.tension();
+  return settings;
 }
+} // namespace
 
 MainWindow::MainWindow(QWidget* parent)
   : QMainWindow(parent)
@@ -161,6 +175,7 @@ bool MainWindow::openImage(const QString& path)
   }
   this->Panel->setImageGeometry(meshedAxes == 3 ? 3 : 2, smallest == std::numeric_limits<double>::max() ? 1.0 : smallest);
   this->Report.reset();
+  this->Curves.reset();
   this->View->clear();
   this->Histogram->clear();
   this->Summary->setPlainText(tr("%1: %2 x %3 x %4 voxels, spacing %5 x %6 x %7 mm. Press Mesh.")
@@ -185,11 +200,7 @@ bool MainWindow::startMeshing()
     this->fail(tr("a run is already under way"));
     return false;
   }
-  labelmesher_cli::MeshingSettings settings;
-  settings.ImageToMeshDistance = this->Panel->imageToMeshDistance();
-  settings.MeshToImageDistance = this->Panel->meshToImageDistance();
-  settings.Decimate = this->Panel->decimate();
-  settings.MinimumAngle = this->Panel->minimumAngle();
+  const labelmesher_cli::MeshingSettings settings = SettingsOf(*this->Panel);
   if (!this->Job.start(this->Image, settings))
   {
     this->fail(tr("the run could not be started"));
@@ -245,20 +256,20 @@ void MainWindow::onProgress(double fraction, const QString& stage)
 void MainWindow::onFinished()
 {
   const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
-  labelmesher_cli::Arguments args; // the report's parameters, as the CLI would have them
-  args.Input = this->ImagePath.toStdString();
-  args.Outputs = { "(not saved)" };
-  args.ImageToMeshDistance = this->RunSettings.ImageToMeshDistance;
-  args.MeshToImageDistance = this->RunSettings.MeshToImageDistance;
-  args.Decimate = this->RunSettings.Decimate;
-  args.MinimumAngle = this->RunSettings.MinimumAngle;
-  labelmesher_cli::RunReport report = labelmesher_cli::MakeReport(args, this->Image, out.Mesh, out.Initial);
+  labelmesher_cli::RunReport report =
+    labelmesher_cli::MakeReport(this->ImagePath.toStdString(), this->RunSettings, this->Image, out.Mesh, out.Initial);
+  report.Outputs = { "(not saved)" };
   report.Materials = this->Materials;
   for (const QString& note : this->Notes)
   {
     report.Notes.push_back(note.toStdString());
   }
   this->Report = report;
+  this->Curves.reset();
+  if (out.Curved)
+  {
+    this->Curves = labelmesher_cli::MakeCurveReport(report, this->RunSettings, out.Curved);
+  }
 
   std::map<int, QColor> colours;
   for (const labelmesher::io::MaterialInfo& m : this->Materials.Entries())
@@ -268,15 +279,26 @@ void MainWindow::onFinished()
       colours[m.Label] = QColor::fromRgbF(m.Color[0], m.Color[1], m.Color[2]);
     }
   }
-  this->View->setMesh(out.Mesh, colours);
+  this->View->setMesh(out.Curved ? out.Curved : out.Mesh, colours);
   // The line marks the decimator's bound; without decimation none is drawn (the mesher's proven
   // bound, 30 or 45 degrees, is stated in the summary's angle line, not chosen here).
   const double bound = this->RunSettings.Decimate ? this->RunSettings.MinimumAngle : 0.0;
   this->Histogram->setMesh(out.Mesh, bound);
   this->showReport();
   this->Progress->setValue(kProgressSteps);
-  QString done = tr("meshed in %1 s: %2 cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
-  if (!out.Warning.empty())
+  QString done = out.Curved
+    ? tr("meshed and curved in %1 s: %2 curved cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Curved->GetNumberOfCells())
+    : tr("meshed in %1 s: %2 cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
+  // A failed or unfaithful curving is shown (the marked mesh, for inspection) and said plainly.
+  if (!out.CurveError.empty())
+  {
+    done += tr("; CURVING FAILED: %1").arg(QString::fromStdString(out.CurveError));
+  }
+  else if (this->Curves && !this->Curves->CurvesFaithful())
+  {
+    done += tr("; THE CURVES BREAK A BOUND (see the summary)");
+  }
+  else if (!out.Warning.empty())
   {
     done += tr("; warning: %1").arg(QString::fromStdString(out.Warning));
   }
@@ -307,7 +329,15 @@ void MainWindow::showReport()
     return;
   }
   std::ostringstream text;
-  labelmesher_cli::PrintSummary(*this->Report, text); // the CLI's own summary
+  // The CLI's own summary.
+  if (this->Curves)
+  {
+    labelmesher_cli::PrintCurveSummary(*this->Curves, text);
+  }
+  else
+  {
+    labelmesher_cli::PrintSummary(*this->Report, text);
+  }
   this->Summary->setPlainText(QString::fromStdString(text.str()));
 }
 
@@ -324,11 +354,23 @@ bool MainWindow::saveMesh(const QString& path)
     this->fail(tr("there is no mesh to save yet"));
     return false;
   }
+  const std::optional<labelmesher::io::MeshFormat> format = labelmesher::io::FormatOfPath(path.toStdString());
+  if (out.Curved && format && !labelmesher::io::HoldsCurvedCells(*format))
+  {
+    this->fail(tr("cannot save '%1': curved (Bezier) cells can be saved as .vtu or .vtk only").arg(path));
+    return false;
+  }
   try
   {
-    labelmesher::io::MeshFileWriter writer(out.Mesh, out.Interfaces, this->Materials, {});
+    // A curved mesh is saved without interfaces, as `labelmesher curve` writes it.
+    labelmesher::io::MeshFileWriter writer(out.Curved ? out.Curved : out.Mesh,
+      out.Curved ? nullptr : out.Interfaces.GetPointer(), this->Materials, {});
     const std::vector<std::string> written = writer.Write(path.toStdString());
     this->Report->Outputs = written;
+    if (this->Curves)
+    {
+      this->Curves->Linear.Outputs = written;
+    }
   }
   catch (const std::exception& e)
   {

@@ -8,10 +8,15 @@
  * the parameters (ParameterPanel), mesh in a worker thread (MeshingJob) with a
  * progress bar and Cancel, look at the mesh (MeshView, clipping plane) and its
  * quality (AngleHistogram and the CLI's own summary text), save the mesh in any
- * of the CLI's formats and the picture as PNG. The public methods are what the
+ * of the CLI's formats and the picture as PNG. A 2D image can be curved
+ * (vtkBezierCurver): the view then shows the cubic Bezier cells, the summary
+ * is the CLI's curve report, and the mesh is saved as .vtu or .vtk (the formats
+ * that hold Bezier cells); the histogram stays that of the linear mesh the
+ * curves were made from (its corners are the curved cells'). The public methods are what the
  * menus and buttons call, so a test drives the window exactly as a user does.
  */
 
+#include "CurveReport.h"
 #include "MeshingJob.h"
 #include "Report.h"
 
@@ -62,7 +67,7 @@ public:
   void cancelMeshing();
   bool isMeshing() const;
   /// Writes the shown mesh; the format is the extension's (.vtu, .vtk, .msh, .inp, .mesh, .vtp,
-  /// .stl, .obj), the file whole or not at all.
+  /// .stl, .obj; a curved mesh .vtu or .vtk only), the file whole or not at all.
   bool saveMesh(const QString& path);
   /// Writes the view as PNG, whole or not at all.
   bool savePicture(const QString& path);
@@ -72,6 +77,8 @@ public:
   widgets::AngleHistogram* histogram() const { return this->Histogram; }
   /// The last finished run's report (the CLI's figures), if any.
   const std::optional<labelmesher_cli::RunReport>& report() const { return this->Report; }
+  /// The last finished run's curve report, when it curved the mesh.
+  const std::optional<labelmesher_cli::CurveReport>& curveReport() const { return this->Curves; }
   QString summaryText() const;
   double progress() const; ///< of the run under way (or the last), [0, 1]
 
@@ -104,6 +111,7 @@ private:
   QString ImagePath;
   labelmesher_cli::MeshingSettings RunSettings; ///< those of the run under way (or the last)
   std::optional<labelmesher_cli::RunReport> Report;
+  std::optional<labelmesher_cli::CurveReport> Curves;
 
   widgets::ParameterPanel* Panel = nullptr;
   widgets::MeshView* View = nullptr;

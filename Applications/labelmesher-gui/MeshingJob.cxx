@@ -2,6 +2,7 @@
 #include "MeshingJob.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkBezierCurver.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkMeshDecimator.h"
@@ -19,9 +20,34 @@ namespace gui
 {
 namespace
 {
-/// Share of the whole run's progress the mesher takes when the decimator follows (the
-/// decimator's merges and checks take most of the time).
-constexpr double kMesherShare = 0.3;
+/// Where each filter's progress lies in the whole run's: the stages' rough weights on real
+/// images (the decimator's merges and checks take most of the time), over the stages run.
+class StageShares
+{
+public:
+  explicit StageShares(const labelmesher_cli::MeshingSettings& settings)
+  {
+    const double weights[3] = { 0.3, settings.Decimate ? 0.7 : 0.0, settings.Curve ? 0.3 : 0.0 };
+    const double total = weights[0] + weights[1] + weights[2];
+    double start = 0.0;
+    for (int s = 0; s < 3; ++s)
+    {
+      this->Start[s] = start / total;
+      this->Share[s] = weights[s] / total;
+      start += weights[s];
+    }
+  }
+
+  /// The whole run's fraction when `running` has done `fraction` of its own work.
+  double Whole(vtkAlgorithm* running, double fraction) const
+  {
+    const int s = vtkBezierCurver::SafeDownCast(running) ? 2 : vtkMeshDecimator::SafeDownCast(running) ? 1 : 0;
+    return this->Start[s] + this->Share[s] * fraction;
+  }
+
+private:
+  double Start[3] = {}, Share[3] = {};
+};
 } // namespace
 
 /// The state one worker owns; the window's thread reads it only after the thread ended.
@@ -85,18 +111,15 @@ bool MeshingJob::start(vtkImageData* image, const labelmesher_cli::MeshingSettin
   this->Current = run;
   this->Thread = QThread::create([this, run]() {
     const auto start = std::chrono::steady_clock::now();
-    const bool decimate = run->Settings.Decimate;
+    const StageShares shares(run->Settings);
     // Runs in this worker thread, on each progress report of the running filter.
-    const labelmesher_cli::FilterProgress progress = [this, run, decimate](
+    const labelmesher_cli::FilterProgress progress = [this, run, shares](
                                                        vtkAlgorithm* running, double fraction, const std::string& stage) {
       if (run->CancelRequested.load())
       {
         running->SetAbortExecute(1); // read by the filter right after this report
       }
-      const bool decimating = vtkMeshDecimator::SafeDownCast(running) != nullptr;
-      const double whole = !decimate ? fraction
-        : decimating                 ? kMesherShare + (1.0 - kMesherShare) * fraction
-                                     : kMesherShare * fraction;
+      const double whole = shares.Whole(running, fraction);
       run->Fraction = whole;
       // Queued to the window's thread; a few hundred signals per run at most.
       if (whole - run->LastSent >= 0.005 || whole >= 1.0)

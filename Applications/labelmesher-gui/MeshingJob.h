@@ -4,9 +4,10 @@
 
 /**
  * @file MeshingJob.h
- * One run of the meshing pipeline (MeshingPipeline.h: vtkLabelOctreeMesher and
- * vtkMeshDecimator) in a worker thread, so the window stays live: progress
- * arrives as signals in the window's thread, cancel() makes the running filter
+ * One run of the meshing pipeline (MeshingPipeline.h: vtkLabelOctreeMesher,
+ * vtkMeshDecimator and, for 2D images on request, vtkBezierCurver) in a worker
+ * thread, so the window stays live: progress arrives as signals in the
+ * window's thread, cancel() makes the running filter
  * stop at its next progress report (AbortExecute, set from the worker's own
  * progress observer), and the meshes are handed over only when the thread has
  * finished with them.

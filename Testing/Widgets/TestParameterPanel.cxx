@@ -41,6 +41,7 @@ private slots:
     QCOMPARE(panel.meshToImageDistance(), 2.0);
     QCOMPARE(panel.minimumAngle(), 15.0);
     QVERIFY(panel.decimate());
+    QVERIFY(!panel.curve()); // curving is asked for, not a default
     QCOMPARE(panel.smoothness(), 1);
     QCOMPARE(panel.tension(), 0.333);
     QCOMPARE(panel.property("minimumAngle").toDouble(), 15.0); // a Q_PROPERTY
@@ -120,6 +121,13 @@ private slots:
     QCOMPARE(panel.maximumAngle(), 45.0);
     panel.setMinimumAngle(40.0);
     QCOMPARE(panel.minimumAngle(), 40.0);
+    // The curver's controls apply to 2D images once curving is on.
+    QVERIFY(child<QCheckBox>(panel, "curve")->isEnabled());
+    QVERIFY(!child<QComboBox>(panel, "smoothness")->isEnabled());
+    QSignalSpy curve(&panel, &ParameterPanel::curveChanged);
+    panel.setCurve(true);
+    QCOMPARE(curve.count(), 1);
+    QVERIFY(panel.curve());
     QVERIFY(child<QComboBox>(panel, "smoothness")->isEnabled());
     QVERIFY(child<QDoubleSpinBox>(panel, "tension")->isEnabled());
     QSignalSpy angle(&panel, &ParameterPanel::minimumAngleChanged);
@@ -129,6 +137,11 @@ private slots:
     panel.setMinimumAngle(35.0);
     QCOMPARE(panel.minimumAngle(), 30.0);
     QVERIFY(!child<QComboBox>(panel, "smoothness")->isEnabled());
+    QVERIFY(!child<QCheckBox>(panel, "curve")->isEnabled());
+    QVERIFY(!panel.curve()); // no curving of a 3D image, whatever the box says
+    panel.setImageGeometry(2, 1.0);
+    QVERIFY(panel.curve()); // the choice is kept for the next 2D image
+    panel.setImageGeometry(3, 1.0);
     panel.setDecimate(false);
     QVERIFY(!child<QDoubleSpinBox>(panel, "minimumAngle")->isEnabled());
   }
@@ -136,7 +149,7 @@ private slots:
   void tooltipsExplainTheGuarantees()
   {
     ParameterPanel panel;
-    for (const char* name : { "imageToMeshDistance", "meshToImageDistance", "decimate", "minimumAngle", "smoothness" })
+    for (const char* name : { "imageToMeshDistance", "meshToImageDistance", "decimate", "minimumAngle", "curve", "smoothness" })
     {
       const QString tip = panel.findChild<QWidget*>(QString::fromLatin1(name))->toolTip();
       QVERIFY2(tip.contains("Guarantee"), name);

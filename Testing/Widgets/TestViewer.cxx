@@ -3,15 +3,21 @@
 // shared real image, meshes it in the worker thread and checks the guarantees in the report, the
 // angle histogram (its own measure) against the report, clipping, a saved picture
 // that is not blank and a saved mesh read back; then it cancels a second run midway and checks the
-// window kept the first mesh and meshes again; bad paths give one sentence and change nothing.
+// window kept the first mesh and meshes again; bad paths give one sentence and change nothing; a
+// 2D slice is meshed and curved: the curver's guarantees in its report, det J sampled on every
+// curved cell shown, the curved mesh saved as .vtu only.
 #include "AngleHistogram.h"
+#include "CurvingChecks.h"
 #include "MainWindow.h"
 #include "MeshView.h"
 #include "MpiSession.h"
 #include "ParameterPanel.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCellType.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
@@ -340,6 +346,104 @@ private slots:
           hues.insert(pixel.hue() / 10);
       }
     QVERIFY2(hues.size() >= 8, qPrintable(QString::number(hues.size())));
+  }
+
+  void curvesA2DImage()
+  {
+    // The digimouse slice of the test above is still open.
+    QCOMPARE(Window->parameters()->imageDimension(), 2);
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    Window->parameters()->setPreset(ParameterPanel::Preset::Balanced);
+    Window->parameters()->setCurve(true);
+    Window->parameters()->setSmoothness(2);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QCOMPARE(errors.count(), 0);
+
+    // The curver's guarantees, from the report (the CLI's curve figures).
+    QVERIFY(Window->curveReport().has_value());
+    const labelmesher_cli::CurveReport& c = *Window->curveReport();
+    QCOMPARE(c.Smoothness, 2);
+    QVERIFY(c.Valid());
+    QCOMPARE(c.InvalidCells, 0LL);
+    QVERIFY2(c.MinimumScaledJacobian > 0.0, qPrintable(QString::number(c.MinimumScaledJacobian)));
+    QVERIFY(c.CurvedEdges > 0);
+    QCOMPARE(c.InterfaceCrossings.value_or(-1), 0LL);
+    QVERIFY(c.TopologyMatches.value_or(false));
+    QVERIFY2(c.MeasuredImageToMesh && *c.MeasuredImageToMesh <= 2.0 + c.CurveResolution.value_or(0.0) + 1e-9,
+      qPrintable(QString::number(c.MeasuredImageToMesh.value_or(-1))));
+    QVERIFY2(c.MeasuredMeshToImage && *c.MeasuredMeshToImage <= 2.0 + c.CurveResolution.value_or(0.0) + 1e-9,
+      qPrintable(QString::number(c.MeasuredMeshToImage.value_or(-1))));
+    QVERIFY(c.CurvesFaithful());
+    QVERIFY(Window->summaryText().contains("cubic Bezier triangles"));
+    QVERIFY(Window->summaryText().contains("every cell proven valid"));
+    // The histogram is the linear mesh's, the one curved (its corners are the curved cells').
+    QCOMPARE(Window->histogram()->measuredCells(), Window->report()->Cells);
+    QVERIFY(Window->histogram()->smallestAngle() >= 15.0 - 1e-9);
+
+    // The view shows the curved cells themselves: cubic Bezier triangles, each valid by det J
+    // sampled densely on a barycentric grid (not the curver's Bernstein bound).
+    vtkUnstructuredGrid* shown = Window->view()->mesh();
+    QVERIFY(shown);
+    QCOMPARE(static_cast<long long>(shown->GetNumberOfCells()), c.Cells);
+    QVERIFY(Window->view()->showsCurvedCells());
+    QCOMPARE(Window->view()->shownCells(), shown->GetNumberOfCells());
+    // Every edge drawn once: E = (3 T + boundary edges) / 2, so 3T/2 <= E <= 3T.
+    const vtkIdType edges = Window->view()->drawnEdges();
+    QVERIFY2(2 * edges >= 3 * shown->GetNumberOfCells() && edges <= 3 * shown->GetNumberOfCells(),
+      qPrintable(QString::number(edges)));
+    double bounds[6];
+    shown->GetBounds(bounds);
+    QCOMPARE(bounds[5] - bounds[4], 0.0); // the PNG's slice lies in z = 0
+    vtkNew<vtkIdList> ids;
+    double orientation = 0.0;
+    for (vtkIdType cell = 0; cell < shown->GetNumberOfCells(); ++cell)
+    {
+      QCOMPARE(shown->GetCellType(cell), static_cast<int>(VTK_BEZIER_TRIANGLE));
+      shown->GetCellPoints(cell, ids);
+      QCOMPARE(ids->GetNumberOfIds(), static_cast<vtkIdType>(10));
+      labelmesher::CubicTriangle triangle;
+      for (int k = 0; k < 10; ++k)
+      {
+        double p[3];
+        shown->GetPoint(ids->GetId(k), p);
+        triangle.ControlPoints[static_cast<std::size_t>(k)] = { p[0], p[1] };
+      }
+      const auto& q = triangle.ControlPoints;
+      const double corners = (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
+      if (orientation == 0.0)
+        orientation = corners > 0.0 ? 1.0 : -1.0; // the mesh's orientation, the same for every cell
+      if (orientation < 0.0)
+        for (auto& point : triangle.ControlPoints)
+          point[0] = -point[0];
+      const double jacobian = labelmesher::testing::SampledMinimumJacobian(triangle, 24);
+      QVERIFY2(jacobian > 0.0, qPrintable(QString("cell %1: sampled det J %2").arg(cell).arg(jacobian)));
+    }
+    const QImage picture = Window->view()->grabPicture();
+    QVERIFY(Coverage(picture).first > 0.02);
+    if (!Folder.autoRemove())
+      QVERIFY(picture.save(Folder.filePath("curved.png")));
+
+    // Saved as the CLI writes it: .vtu/.vtk only, read back with the same Bezier cells.
+    QVERIFY(!Window->saveMesh(Folder.filePath("curved.msh")));
+    QVERIFY(errors.last().at(0).toString().contains(".vtu or .vtk"));
+    QVERIFY(!QFile::exists(Folder.filePath("curved.msh")));
+    QVERIFY(Window->saveMesh(Folder.filePath("curved.vtu")));
+    QCOMPARE(Window->curveReport()->Linear.Outputs.size(), std::size_t{ 1 });
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(qPrintable(Folder.filePath("curved.vtu")));
+    reader->Update();
+    QCOMPARE(reader->GetOutput()->GetNumberOfCells(), shown->GetNumberOfCells());
+    QCOMPARE(reader->GetOutput()->GetCellType(0), static_cast<int>(VTK_BEZIER_TRIANGLE));
+
+    // Curving off again: the same image gives the linear mesh.
+    Window->parameters()->setCurve(false);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 2, kRunTimeoutMs);
+    QVERIFY(!Window->curveReport().has_value());
+    QVERIFY(!Window->view()->showsCurvedCells());
+    QCOMPARE(Window->view()->drawnEdges(), static_cast<vtkIdType>(0));
   }
 
   void cleanupTestCase() { Window.reset(); }

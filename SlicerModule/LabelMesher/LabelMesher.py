@@ -32,7 +32,8 @@ class LabelMesher(ScriptedLoadableModule):
             "Meshes the chosen segments (or a labelmap volume) into tetrahedra whose dihedral angles are "
             "at least 30 degrees (after decimation: at least the angle bound), within the two distance "
             "bounds of the segments (in voxels of the smallest spacing), with the topology of every "
-            "segment kept. The report below the Apply button gives the measured values.")
+            "segment kept. A single slice can also be curved: cubic Bezier triangles, each proven valid, "
+            "whose curves keep both distance bounds. The report below the Apply button gives the measured values.")
         self.parent.acknowledgementText = (
             "Octree refinement and decimation after J. Xu, PhD dissertation, Old Dominion University, 2020.")
 
@@ -48,6 +49,9 @@ class LabelMesherParameterNode:
     decimate: bool = True
     minimumAngle: Annotated[float, WithinRange(1.0, 30.0)] = 15.0
     includeBackground: bool = False
+    curve: bool = False
+    smoothness: Annotated[int, WithinRange(1, 2)] = 1
+    tension: Annotated[float, WithinRange(0.0, 1.0)] = 1.0 / 3.0
 
 
 class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
@@ -141,8 +145,10 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
             p = self._parameterNode
             report = self.logic.process(
                 p.inputSegmentation, self.checkedSegmentIds(), p.inputLabelmap, p.outputModel,
-                MeshingParameters(p.imageToMeshDistance, p.meshToImageDistance, p.decimate, p.minimumAngle,
-                                  p.includeBackground),
+                MeshingParameters(image_to_mesh_distance=p.imageToMeshDistance,
+                                  mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
+                                  minimum_angle=p.minimumAngle, include_background=p.includeBackground,
+                                  curve=p.curve, smoothness=p.smoothness, tension=p.tension),
                 progress, lambda: self._cancelRequested)
             self.ui.summaryText.plainText = summary_text(report)
         except MeshingCancelled:
@@ -243,6 +249,7 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
     def runTest(self):
         self.setUp()
         self.test_TwoSegmentsInAnObliqueVolume()
+        self.test_CurvedSlice()
 
     def test_TwoSegmentsInAnObliqueVolume(self):
         labels = np.zeros((16, 18, 20), dtype=np.uint8)
@@ -261,3 +268,16 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
         self.assertTrue(report["fidelity"]["bounds_certified"])
         self.assertTrue(report["topology"]["all_match"])
         self.delayDisplay("LabelMesher test passed")
+
+    def test_CurvedSlice(self):
+        labels = np.zeros((1, 40, 40), dtype=np.uint8)
+        yy, xx = np.mgrid[0:40, 0:40]
+        labels[0][(xx - 20) ** 2 + (yy - 20) ** 2 <= 12 ** 2] = 1
+        labels[0][(xx - 20) ** 2 + (yy - 20) ** 2 <= 5 ** 2] = 2
+        volume = slicer.util.addVolumeFromArray(labels, nodeClassName="vtkMRMLLabelMapVolumeNode")
+        model = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode")
+        report = LabelMesherLogic().process(None, [], volume, model, MeshingParameters(curve=True))
+        self.assertEqual(model.GetMesh().GetCellType(0), vtk.VTK_BEZIER_TRIANGLE)
+        self.assertTrue(report["curved_mesh"]["valid"])
+        self.assertTrue(report["curved_mesh"]["within_bounds"])
+        self.delayDisplay("LabelMesher curved slice test passed")

@@ -5,15 +5,17 @@ without Slicer: Debian's Python, the wrapped filters, shared real images.
 usage: python3 -m unittest test_slicer_logic   (PYTHONPATH: the wrapped module,
 SlicerModule/LabelMesher and Testing/Support; LABELMESHER_DATA: ../shared/data)
 """
+import math
 import os
 import unittest
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE
 
 from label_nrrd import read_label_nrrd
 from LabelMesherLib.meshing import (Material, MeshingCancelled, MeshingError, MeshingParameters,
-                                    mesh_labels, placement_from_ijk_to_ras)
+                                    mesh_labels, placement_from_ijk_to_ras, summary_text)
 
 DATA = os.environ.get("LABELMESHER_DATA", os.path.join(os.path.dirname(__file__), "../../../shared/data"))
 
@@ -141,6 +143,89 @@ class SliceTest(unittest.TestCase):
         normal = oblique_ijk_to_ras((1, 1, 1), (0, 0, 0))[:3, 2]
         offsets = (points(result.mesh) - (1.0, 2.0, 3.0)) @ normal
         self.assertLess(np.max(np.abs(offsets)), 1e-9)
+
+
+# VTK_BEZIER_TRIANGLE's degree-3 control points by barycentric multi-index (i, j, k): corners,
+# two per edge 0-1, 1-2, 2-0, then the interior one.
+CUBIC_INDEX = {(3, 0, 0): 0, (0, 3, 0): 1, (0, 0, 3): 2, (2, 1, 0): 3, (1, 2, 0): 4, (0, 2, 1): 5,
+               (0, 1, 2): 6, (1, 0, 2): 7, (2, 0, 1): 8, (1, 1, 1): 9}
+
+
+def sampled_jacobians(control, n=16):
+    """det J of each planar cubic Bezier triangle (control: cells x 10 x 2) on a barycentric grid of
+    n steps per side, corners included: exact derivatives, not the curver's Bernstein bound."""
+    grid = np.array([(1.0 - (i + j) / n, i / n, j / n) for i in range(n + 1) for j in range(n + 1 - i)])
+    u, v, w = grid.T
+    derivative = {axis: np.zeros((control.shape[0], grid.shape[0], 2)) for axis in range(3)}
+    for a, b, c in [(2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 0), (0, 1, 1), (1, 0, 1)]:
+        basis = 3.0 * (2.0 / (math.factorial(a) * math.factorial(b) * math.factorial(c))) * u**a * v**b * w**c
+        for axis, raised in enumerate([(a + 1, b, c), (a, b + 1, c), (a, b, c + 1)]):
+            derivative[axis] += basis[None, :, None] * control[:, None, CUBIC_INDEX[raised], :]
+    dx, dy = derivative[1] - derivative[0], derivative[2] - derivative[0]  # x = v, y = w, u = 1 - x - y
+    return dx[..., 0] * dy[..., 1] - dx[..., 1] * dy[..., 0]
+
+
+class CurvedSliceTest(unittest.TestCase):
+    """A 2D label image (shared, real) curved, placed obliquely with a reflection."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.labels, spacing = read_label_nrrd(os.path.join(DATA, "2d/digimouse_sagittal.nrrd"))
+        cls.matrix = oblique_ijk_to_ras(spacing[:2].tolist() + [0.2], (1.0, 2.0, 3.0))
+        cls.result = mesh_labels(cls.labels, cls.matrix,
+                                 parameters=MeshingParameters(curve=True, smoothness=2, minimum_angle=20.0))
+
+    def test_the_linear_mesh_keeps_its_guarantees(self):
+        check_guarantees(self, self.result.report, 20.0)
+        self.assertEqual(self.result.report["mesh"]["cell_type"], "triangle")
+
+    def test_curved_report_states_the_guarantees(self):
+        c = self.result.report["curved_mesh"]
+        self.assertEqual(c["cells"], self.result.mesh.GetNumberOfCells())
+        self.assertEqual(c["smoothness"], 2)
+        self.assertTrue(c["valid"])
+        self.assertEqual(c["invalid_cells"], 0)
+        self.assertGreater(c["minimum_scaled_jacobian"], 0.0)
+        self.assertGreater(c["curved_edges"], 0)
+        self.assertEqual(c["interface_crossings"], 0)
+        self.assertTrue(c["topology_matches"])
+        for side in ("image_to_mesh", "mesh_to_image"):
+            self.assertLessEqual(c[f"measured_{side}"], 2.0 + c["measure_resolution"] + 1e-9)
+        self.assertTrue(c["within_bounds"])
+        self.assertIn("every cell proven valid", summary_text(self.result.report))
+
+    def test_every_curved_cell_is_valid_by_sampled_jacobian(self):
+        mesh = self.result.mesh
+        types = vtk_to_numpy(mesh.GetCellTypesArray())
+        self.assertTrue(np.all(types == VTK_BEZIER_TRIANGLE))
+        connectivity = vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 10)
+        # The control points lie in the slice's plane; in the slice's own (i, j) axes they are the
+        # curver's planar cells, placed rigidly.
+        normal = self.matrix[:3, 2] / np.linalg.norm(self.matrix[:3, 2])
+        self.assertLess(np.max(np.abs((points(mesh) - (1.0, 2.0, 3.0)) @ normal)), 1e-9)
+        axes = self.matrix[:3, :2] / np.linalg.norm(self.matrix[:3, :2], axis=0)
+        planar = (points(mesh) - (1.0, 2.0, 3.0)) @ axes
+        jacobians = sampled_jacobians(planar[connectivity])
+        sign = np.sign(jacobians[0, 0])
+        self.assertTrue(np.all(jacobians * sign > 0.0), f"smallest {np.min(jacobians * sign)}")
+
+    def test_curving_a_volume_or_a_bad_smoothness_is_one_plain_error(self):
+        volume = np.zeros((6, 6, 6), dtype=np.uint8)
+        volume[1:5, 1:5, 1:5] = 1
+        with self.assertRaisesRegex(MeshingError, "2D image"):
+            mesh_labels(volume, np.eye(4), parameters=MeshingParameters(curve=True))
+        with self.assertRaisesRegex(MeshingError, "smoothness"):
+            mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(curve=True, smoothness=3))
+        with self.assertRaisesRegex(MeshingError, "tension"):
+            mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(curve=True, tension=1.5))
+
+    def test_cancel_while_curving(self):
+        asked = []
+        with self.assertRaises(MeshingCancelled):
+            mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(curve=True),
+                        progress=lambda f, text: asked.append((f, text)),
+                        should_abort=lambda: any(f >= 0.8 for f, _ in asked))  # the curver's share starts at 0.8
+        self.assertGreaterEqual(max(f for f, _ in asked), 0.8)
 
 
 class ProgressCancelAndErrorsTest(unittest.TestCase):

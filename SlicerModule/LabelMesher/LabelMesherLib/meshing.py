@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The LabelMesher module's logic without 3D Slicer: a label array, its IJK to RAS
 placement and the segments' names and colours in; the filters (the wrapped VTK
-module ``labelmesher``) run; a tetrahedral/triangle mesh in RAS and a quality
-report out. Slicer's own classes appear only in ``LabelMesher.py``; this file
+module ``labelmesher``) run; a tetrahedral/triangle mesh in RAS (for one slice on
+request curved: cubic Bezier triangles, vtkBezierCurver) and a quality report out. Slicer's own classes appear only in ``LabelMesher.py``; this file
 needs numpy and VTK's Python bindings, so it is tested with Debian's Python.
 
 Placement: Slicer's IJK to RAS matrix is M = [R diag(s) | o] for a volume with
@@ -52,6 +52,9 @@ class MeshingParameters:
     decimate: bool = True
     minimum_angle: float = 15.0  # the decimator keeps every angle at least this (<= 30 in 3D, 45 in 2D)
     include_background: bool = False
+    curve: bool = False  # one slice only: curve the mesh (vtkBezierCurver), keeping validity and both bounds
+    smoothness: int = 1  # 1 (C1, fitted to the image) or 2 (C2) at the curves' joints
+    tension: float = 1.0 / 3.0  # C1 handle length factor, dimensionless, [0, 1]
 
     def validate(self, dimension: int):
         for name in ("image_to_mesh_distance", "mesh_to_image_distance"):
@@ -62,6 +65,13 @@ class MeshingParameters:
         if self.decimate and not (0.0 < self.minimum_angle <= limit):
             raise MeshingError(
                 f"minimum angle must be within (0, {limit:g}] degrees for a {dimension}D image, not {self.minimum_angle}")
+        if self.curve:
+            if dimension != 2:
+                raise MeshingError("curving needs a 2D image (a single slice); this one is 3D")
+            if self.smoothness not in (1, 2):
+                raise MeshingError(f"smoothness must be 1 (C1) or 2 (C2), not {self.smoothness}")
+            if not (0.0 <= self.tension <= 1.0):
+                raise MeshingError(f"tension must be within [0, 1], not {self.tension}")
 
 
 @dataclass
@@ -77,8 +87,8 @@ class Placement:
 
 @dataclass
 class MeshingResult:
-    mesh: vtkUnstructuredGrid          # in RAS, cell data "Material"
-    interfaces: object                 # vtkPolyData of the interfaces (port 1), in RAS
+    mesh: vtkUnstructuredGrid          # in RAS, cell data "Material"; curved: VTK_BEZIER_TRIANGLE cells
+    interfaces: object                 # vtkPolyData of the linear mesh's interfaces (port 1), in RAS
     report: Dict = field(default_factory=dict)
 
 
@@ -201,8 +211,9 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
                 progress: Optional[Callable[[float, str], None]] = None,
                 should_abort: Optional[Callable[[], bool]] = None) -> MeshingResult:
     """Meshes a label array placed by ijk_to_ras: vtkLabelOctreeMesher, then
-    (parameters.decimate) vtkMeshDecimator; returns the mesh in RAS and its report.
-    Raises MeshingError (bad input, a filter's error) or MeshingCancelled."""
+    (parameters.decimate) vtkMeshDecimator, then (parameters.curve, one slice)
+    vtkBezierCurver; returns the mesh in RAS and its report. Raises MeshingError
+    (bad input, a filter's error, an untangling failure) or MeshingCancelled."""
     parameters = parameters or MeshingParameters()
     placement = placement_from_ijk_to_ras(ijk_to_ras)
     image = label_image(labels_kji, placement.spacing, selected)
@@ -218,8 +229,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     # The decimator needs the background cells (the mesh must fill its box); it drops them itself.
     mesher.SetIncludeBackground(parameters.include_background or parameters.decimate)
     mesher.SetMeasureOutput(not parameters.decimate)
-    share = 0.5 if parameters.decimate else 1.0
-    _watch(mesher, 0.0, share, progress, should_abort, errors)
+    starts = _stage_starts(parameters)
+    _watch(mesher, starts[0], starts[1] - starts[0], progress, should_abort, errors)
     _update(mesher, errors, should_abort)
     last = mesher
     if parameters.decimate:
@@ -229,12 +240,26 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
         decimator.SetMinimumAngle(parameters.minimum_angle)
         decimator.SetIncludeBackground(parameters.include_background)
         decimator.SetMeasureOutput(True)
-        _watch(decimator, share, 1.0 - share, progress, should_abort, errors)
+        _watch(decimator, starts[1], starts[2] - starts[1], progress, should_abort, errors)
         _update(decimator, errors, should_abort)
         last = decimator
+    curver = None
+    if parameters.curve:
+        # The curver keeps the bounds the linear mesh records and measures the curves itself.
+        curver = labelmesher.vtkBezierCurver()
+        curver.SetInputConnection(0, last.GetOutputPort(0))
+        curver.SetInputData(1, image)
+        curver.SetSmoothness(parameters.smoothness)
+        curver.SetTension(parameters.tension)
+        _watch(curver, starts[2], 1.0 - starts[2], progress, should_abort, errors)
+        _update(curver, errors, should_abort)
 
-    mesh = vtkUnstructuredGrid()
-    mesh.DeepCopy(last.GetOutputDataObject(0))
+    linear = vtkUnstructuredGrid()
+    linear.DeepCopy(last.GetOutputDataObject(0))
+    mesh = linear
+    if curver is not None:
+        mesh = vtkUnstructuredGrid()
+        mesh.DeepCopy(curver.GetOutputDataObject(0))
     interfaces = last.GetOutputDataObject(1).NewInstance()
     interfaces.DeepCopy(last.GetOutputDataObject(1))
     place(mesh, placement)
@@ -243,10 +268,21 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     known = {m.label: m for m in materials}
     table = [known.get(label, Material(label, f"label_{label}")) for label in sorted(present)]
     attach_materials(mesh, table)
-    report = quality_report(mesh, dims, placement, parameters)
+    attach_materials(linear, table)
+    report = quality_report(linear, dims, placement, parameters)
+    if curver is not None:
+        report["curved_mesh"] = curve_report(mesh, parameters)
     if progress:
         progress(1.0, "done")
     return MeshingResult(mesh=mesh, interfaces=interfaces, report=report)
+
+
+def _stage_starts(parameters: MeshingParameters):
+    """Where the mesher's, the decimator's and the curver's progress start in the run's
+    (their rough weights on real images, over the stages run)."""
+    weights = [1.0, 1.0 if parameters.decimate else 0.0, 0.5 if parameters.curve else 0.0]
+    total = sum(weights)
+    return [sum(weights[:s]) / total for s in range(3)]
 
 
 def _field(mesh, name, tuple_index=0):
@@ -306,6 +342,35 @@ def quality_report(mesh, dims, placement: Placement, parameters: MeshingParamete
     }
 
 
+def curve_report(curved, parameters: MeshingParameters) -> Dict:
+    """What the curver made and measured, under the keys of `labelmesher curve --report`'s
+    "curved_mesh" and "validity" objects (distances in voxels of the smallest spacing)."""
+    fd, cd = curved.GetFieldData(), curved.GetCellData()
+    scaled = vtk_to_numpy(cd.GetArray("ScaledJacobian")) if cd.GetArray("ScaledJacobian") else np.zeros(0)
+    valid = vtk_to_numpy(cd.GetArray("Valid")) if cd.GetArray("Valid") else np.zeros(0)
+    crossings, topology = _field(curved, "InterfaceCrossings"), _field(curved, "TopologyMatches")
+    resolution = _field(curved, "CurvedMeasureResolution") or 0.0
+    image_to_mesh = _field(curved, "MeasuredImageToMeshDistance")
+    mesh_to_image = _field(curved, "MeasuredMeshToImageDistance")
+    within = (image_to_mesh is not None and image_to_mesh <= parameters.image_to_mesh_distance + resolution + 1e-9
+              and mesh_to_image is not None and mesh_to_image <= parameters.mesh_to_image_distance + resolution + 1e-9
+              and crossings == 0 and topology == 1.0)
+    return {
+        "cell_type": "bezier_triangle_degree_3",
+        "cells": curved.GetNumberOfCells(), "control_points": curved.GetNumberOfPoints(),
+        "smoothness": parameters.smoothness, "tension": parameters.tension,
+        "curved_edges": int(_field(curved, "CurvedEdges") or 0),
+        "valid": bool(valid.size == curved.GetNumberOfCells() and np.all(valid != 0)),
+        "invalid_cells": int(_field(curved, "InvalidCells") or 0),
+        "minimum_scaled_jacobian": float(scaled.min()) if scaled.size else None,
+        "measure_resolution": resolution,
+        "measured_image_to_mesh": image_to_mesh, "measured_mesh_to_image": mesh_to_image,
+        "interface_crossings": None if crossings is None else int(crossings),
+        "topology_matches": None if topology is None else topology == 1.0,
+        "within_bounds": bool(within),
+    }
+
+
 def summary_text(report: Dict) -> str:
     """A few lines for the module's panel."""
     q, f, m = report["quality"], report["fidelity"], report["mesh"]
@@ -315,4 +380,12 @@ def summary_text(report: Dict) -> str:
              f"distances (voxels): image to mesh {f['image_to_mesh']:.3f}, mesh to image {f['mesh_to_image']:.3f}, "
              f"bounds {'certified' if f['bounds_certified'] else 'NOT certified'}",
              f"topology of every material {'matches' if report['topology']['all_match'] else 'DOES NOT match'}"]
+    c = report.get("curved_mesh")
+    if c:
+        lines += [f"curved: {c['cells']} cubic Bezier triangles (C{c['smoothness']}), {c['curved_edges']} curved edges, "
+                  f"{'every cell proven valid' if c['valid'] else 'INVALID CELLS REMAIN'} "
+                  f"(smallest scaled Jacobian {c['minimum_scaled_jacobian']:.3f})",
+                  f"curves (voxels): image to mesh {c['measured_image_to_mesh']:.3f}, mesh to image "
+                  f"{c['measured_mesh_to_image']:.3f}, crossings {c['interface_crossings']}, "
+                  f"{'within the bounds with the topology kept' if c['within_bounds'] else 'A BOUND OR THE TOPOLOGY IS BROKEN'}"]
     return "\n".join(lines)

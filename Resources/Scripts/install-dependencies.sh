@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
   libcgal-dev                          # baseline comparisons in the benchmarks
   clang libclang-rt-14-dev             # the libFuzzer targets (run-fuzzers.sh)
+  afl++                                # the readers' fuzz targets (run-reader-fuzzers.sh: ITK needs GCC)
   python3-numpy                        # Python tests
   xvfb xauth libgl1-mesa-dri           # offscreen pictures (mesh_picture.py): Debian's VTK renders through GLX only
   python3-meshio gmsh                  # independent readers of the mesh files in the tests (meshio, gmsh -check)

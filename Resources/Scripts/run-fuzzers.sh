@@ -14,7 +14,7 @@ cd "$here/../.."
 seconds="${1:-30}"
 shift || true
 build=build-fuzz
-all=(fuzz_label_validation fuzz_mesher) # the readers' harness waits for AFL++ (Testing/Fuzz/CMakeLists.txt)
+all=(fuzz_label_validation fuzz_mesher) # the readers': run-reader-fuzzers.sh (AFL++, ITK needs GCC)
 targets=("${@:-${all[@]}}")
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
 

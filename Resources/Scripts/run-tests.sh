@@ -14,6 +14,8 @@ ctest --test-dir build --output-on-failure -j2
 bash "$here/run-sanitizer-tests.sh" 4
 # Each libFuzzer target for 30 s from its seed corpus, after replaying the inputs that once failed.
 bash "$here/run-fuzzers.sh" 30
+# Each reader's AFL++ target for 30 s (build-afl/), after replaying the inputs that once failed.
+bash "$here/run-reader-fuzzers.sh" 30
 # The ParaView plugin: its own configure against ParaView's VTK, then its tests (pvbatch, GUI).
 bash "$here/build-paraview-plugin.sh"
 ctest --test-dir build-paraview/build --output-on-failure

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// libFuzzer target: the CLI's label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary
+// Fuzz target (AFL++, main() in FileDriver.cxx; the libFuzzer entry point): the CLI's label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary
 // bytes, saved under a name ending in LABELMESHER_FUZZ_EXTENSION (.nrrd, .nii, .mha, .vti, .png,
 // .seg.nrrd: one target each). Every input must give a checked image or an InputError; any other
 // exception, a crash, a hang or a sanitizer report is a finding, and so is an image the checks

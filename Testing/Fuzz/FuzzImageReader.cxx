@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Fuzz target (AFL++, main() in FileDriver.cxx; the libFuzzer entry point): the CLI's label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary
-// bytes, saved under a name ending in LABELMESHER_FUZZ_EXTENSION (.nrrd, .nii, .mha, .vti, .png,
-// .seg.nrrd: one target each). Every input must give a checked image or an InputError; any other
-// exception, a crash, a hang or a sanitizer report is a finding, and so is an image the checks
-// should have refused (not one integer component named Labels, or fewer values than voxels).
+// Fuzz target (LLVMFuzzerTestOneInput; built for AFL++ with FileDriver.cxx as main()): the CLI's
+// label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary bytes, saved under a name
+// ending in LABELMESHER_FUZZ_EXTENSION (.nrrd, .nii, .mha, .vti, .png, .seg.nrrd: one target
+// each). Every input must give a checked image or an InputError; any other exception, a crash, a
+// hang or a sanitizer report is a finding, and so is an image the checks should have refused (not
+// one integer component named Labels, or fewer values than voxels).
 #include "ImageReader.h"
 #include "VTKMessages.h"
 

@@ -2,6 +2,7 @@
 // Turns a VTK object's error and warning events into one plain line instead of VTK's log records.
 #include "VTKMessages.h"
 
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkObjectFactory.h"
@@ -55,6 +56,10 @@ void SilenceVTKOutputWindow()
 {
   vtkNew<SilentOutputWindow> silent;
   vtkOutputWindow::SetInstance(silent); // keeps its own reference
+  // VTK 9.1 also logs every vtkErrorMacro through vtkLogger (loguru), which writes straight to
+  // stderr, past the output window: found by fuzzing the VTI reader ("vtkXMLDataParser.cxx:889
+  // ERR| ... ReadCompressionHeader failed" in red before the CLI's own line).
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
 } // namespace labelmesher_cli

@@ -40,9 +40,10 @@ private:
   unsigned long Tag = 0;
 };
 
-/// Replaces VTK's output window by one that drops everything: VTK's log records
-/// (file, line, object address, colours) never reach the user; the errors and
-/// warnings that matter are caught by VTKMessages and reported as one line.
+/// Replaces VTK's output window by one that drops everything and turns off
+/// vtkLogger's stderr output: VTK's log records (file, line, object address,
+/// colours) never reach the user; the errors and warnings that matter are
+/// caught by VTKMessages and reported as one line.
 void SilenceVTKOutputWindow();
 
 } // namespace labelmesher_cli

@@ -7,7 +7,8 @@
  * The checks every input image goes through, whichever reader reads it
  * (ImageReader.cxx, SegmentationReader.cxx): the path is a regular file,
  * uncompressed data is as long as the header says, the geometry ITK reports is
- * finite with positive spacing. Internal to the CLI; each throws InputError.
+ * finite with positive spacing, a NRRD header holds nothing NrrdIO cannot
+ * report safely. Internal to the CLI; each throws InputError.
  */
 
 #include "ImageReader.h"
@@ -52,6 +53,40 @@ inline void CheckInputFile(const std::string& path)
   if (!std::filesystem::is_regular_file(path, ec))
   {
     throw InputError("cannot read '" + path + "': not a regular file");
+  }
+}
+
+/// Debian's NrrdIO (ITK 5.2) formats each parse error, the header line quoted, into a fixed
+/// 1,025-byte stack buffer (biff's vsprintf): a malformed field line of about a thousand
+/// characters overruns it and aborts the program (found by fuzzing the .seg.nrrd reader). Field
+/// lines ("name: value") are short in every real file; comments and key/value lines (":=", which
+/// may be long, as Slicer's conversion parameters are) are never quoted, so only field lines are
+/// limited. Files that do not start with the NRRD magic are left to their readers.
+inline void CheckNrrdHeaderLines(const std::string& path)
+{
+  constexpr std::size_t kLongestFieldLine = 800;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("NRRD", 0) != 0)
+  {
+    return;
+  }
+  for (int number = 2; std::getline(in, line); ++number)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      return; // the end of the header
+    }
+    if (line[0] != '#' && line.find(":=") == std::string::npos && line.size() > kLongestFieldLine)
+    {
+      throw InputError("'" + path + "' is not a valid NRRD file (header line " + std::to_string(number) +
+        " is a field of " + std::to_string(line.size()) + " characters; at most " +
+        std::to_string(kLongestFieldLine) + " are read)");
+    }
   }
 }
 

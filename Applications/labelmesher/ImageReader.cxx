@@ -16,12 +16,15 @@
 
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPointData.h"
+#include "vtkType.h"
 #include "vtkXMLImageDataReader.h"
 
 #include <algorithm>
@@ -70,16 +73,12 @@ vtkSmartPointer<vtkImageData> IntegerFromITK(const std::string& path, itk::Image
   return output;
 }
 
-/// Floating-point pixels: accepted only if every value is an integer that fits
-/// 32 bits (label maps are often stored as float); converted to int.
-template <typename TPixel>
-vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOBase* io)
+/// Floating-point labels: accepted only if every value is an integer that fits 32 bits (label
+/// maps are often stored as float); converted to int.
+template <typename TReal>
+vtkSmartPointer<vtkIntArray> IntegerLabels(const TReal* values, std::size_t n, const int dims[3], const std::string& path)
 {
-  auto image = ReadITK<TPixel>(path, io);
-  auto output = GeometryFromITK(image.GetPointer(), path);
-  const std::size_t n = image->GetLargestPossibleRegion().GetNumberOfPixels();
-  const TPixel* values = image->GetBufferPointer();
-  vtkNew<vtkIntArray> labels;
+  auto labels = vtkSmartPointer<vtkIntArray>::New();
   labels->SetName("Labels");
   labels->SetNumberOfValues(static_cast<vtkIdType>(n));
   for (std::size_t i = 0; i < n; ++i)
@@ -104,19 +103,29 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
     }
     if (!problem.empty())
     {
-      int dims[3];
-      output->GetDimensions(dims);
       throw InputError("'" + path + "' is not a label image: voxel " + VoxelText(i, dims) +
         " holds " + problem);
     }
     labels->SetValue(static_cast<vtkIdType>(i), static_cast<int>(v));
   }
-  output->GetPointData()->SetScalars(labels);
+  return labels;
+}
+
+template <typename TPixel>
+vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOBase* io)
+{
+  auto image = ReadITK<TPixel>(path, io);
+  auto output = GeometryFromITK(image.GetPointer(), path);
+  int dims[3];
+  output->GetDimensions(dims);
+  output->GetPointData()->SetScalars(IntegerLabels(image->GetBufferPointer(),
+    image->GetLargestPossibleRegion().GetNumberOfPixels(), dims, path));
   return output;
 }
 
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
+  detail::CheckNrrdHeaderLines(path); // before NrrdIO parses it (whatever the extension)
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (!io)
@@ -195,6 +204,66 @@ vtkSmartPointer<vtkImageData> ReadWithVTK(const std::string& path)
   return output;
 }
 
+bool IsIntegerType(int type)
+{
+  switch (type)
+  {
+    case VTK_CHAR: case VTK_SIGNED_CHAR: case VTK_UNSIGNED_CHAR: case VTK_SHORT: case VTK_UNSIGNED_SHORT:
+    case VTK_INT: case VTK_UNSIGNED_INT: case VTK_LONG: case VTK_UNSIGNED_LONG: case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG: case VTK_ID_TYPE:
+      return true;
+    default:
+      return false; // floating point, VTK_BIT, ...
+  }
+}
+
+/// A VTI's labels: its point scalars, else its only point array; one integer component per point
+/// (integral floats converted, as for the ITK formats), named Labels.
+void CheckVTILabels(vtkImageData* image, const std::string& path)
+{
+  vtkPointData* points = image->GetPointData();
+  vtkDataArray* labels = points->GetScalars();
+  if (!labels && points->GetNumberOfArrays() == 1)
+  {
+    labels = points->GetArray(0);
+  }
+  if (!labels)
+  {
+    throw InputError("'" + path + "' has " + (points->GetNumberOfArrays() == 0 ? std::string("no point data array")
+      : std::to_string(points->GetNumberOfArrays()) + " point data arrays and none marked as Scalars") +
+      ": expected one integer array of labels");
+  }
+  if (labels->GetNumberOfComponents() != 1)
+  {
+    throw InputError("'" + path + "' has " + std::to_string(labels->GetNumberOfComponents()) +
+      " components per voxel: expected a single-channel label image");
+  }
+  if (labels->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    throw InputError("'" + path + "' holds " + std::to_string(labels->GetNumberOfTuples()) + " labels for " +
+      std::to_string(image->GetNumberOfPoints()) + " voxels");
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const std::size_t n = static_cast<std::size_t>(labels->GetNumberOfTuples());
+  vtkSmartPointer<vtkDataArray> checked = labels;
+  if (auto* floats = vtkFloatArray::SafeDownCast(labels))
+  {
+    checked = IntegerLabels(floats->GetPointer(0), n, dims, path);
+  }
+  else if (auto* doubles = vtkDoubleArray::SafeDownCast(labels))
+  {
+    checked = IntegerLabels(doubles->GetPointer(0), n, dims, path);
+  }
+  else if (!IsIntegerType(labels->GetDataType()))
+  {
+    throw InputError("'" + path + "' has labels of type " + std::string(labels->GetDataTypeAsString()) +
+      ": expected integers");
+  }
+  checked->SetName("Labels");
+  points->SetScalars(checked);
+}
+
 } // namespace
 
 vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
@@ -205,7 +274,9 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
   {
     if (EndsWith(lower, ".vti"))
     {
-      return ReadWithVTK<vtkXMLImageDataReader>(path);
+      vtkSmartPointer<vtkImageData> image = ReadWithVTK<vtkXMLImageDataReader>(path);
+      CheckVTILabels(image, path);
+      return image;
     }
     if (EndsWith(lower, ".png"))
     {

@@ -452,6 +452,7 @@ LabeledImage Read(const std::string& path)
   {
     throw InputError("'" + path + "' is not a NRRD file, which a .seg.nrrd segmentation must be");
   }
+  detail::CheckNrrdHeaderLines(path);
   io->SetFileName(path);
   io->ReadImageInformation();
   detail::CheckHeaderSpacing(io, path);

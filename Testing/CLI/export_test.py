@@ -267,10 +267,51 @@ def case_plain_errors():
     assert_plain(cli.run("mesh", gz_as_nii, "-o", cli.path("m.vtu")), "not a valid NIfTI file")
     # Found by fuzzing the VTI reader: a broken zlib header made VTK log a coloured record past the
     # output window (vtkLogger) before the CLI's line.
-    pinned = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                          "../Fuzz/Regressions/read_vti/compression_header_log_record.vti")
+    pinned = os.path.join(REGRESSIONS, "read_vti/compression_header_log_record.vti")
     assert_plain(cli.run("mesh", pinned, "-o", cli.path("m.vtu")), "cannot read")
+    # Found by fuzzing the .seg.nrrd reader: a malformed field line of ~1,200 characters overran
+    # NrrdIO's error buffer (the CLI aborted); refused before NrrdIO parses it, in .nrrd too.
+    long_line = os.path.join(REGRESSIONS, "read_segmentation/long_field_line.seg.nrrd")
+    assert_plain(cli.run("mesh", long_line, "-o", cli.path("m.vtu")), "is a field of")
+    long_nrrd = cli.path("long_field.nrrd")
+    with open(long_nrrd, "wb") as f:
+        f.write(b"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n" + b"x" * 1200 +
+                b"\nencoding: raw\n\n" + bytes(8))
+    assert_plain(cli.run("mesh", long_nrrd, "-o", cli.path("m.vtu")), "header line 5 is a field of 1200 characters")
+    # Found by fuzzing the VTI reader: point data without a Scalars attribute reached the filter.
+    # The only point array is the labels; two unmarked arrays, several components or fractional
+    # floats are refused by the reader in one line.
+    only_array = os.path.join(REGRESSIONS, "read_vti/no_scalars_attribute.vti")
+    result = cli.run("mesh", only_array, "-o", cli.path("only_array.vtu"))
+    assert result.returncode == 0, result.stderr
+    ball = cli.ball(6, 2.2).astype(np.uint8).ravel(order="F").tolist()
+    two = write_vti("two_arrays.vti", (6, 6, 6), [("a", "UInt8", 1, ball), ("b", "UInt8", 1, ball)])
+    assert_plain(cli.run("mesh", two, "-o", cli.path("m.vtu")), "2 point data arrays and none marked as Scalars")
+    pairs = write_vti("pairs.vti", (6, 6, 6), [("Labels", "UInt8", 2, ball + ball)], scalars="Labels")
+    assert_plain(cli.run("mesh", pairs, "-o", cli.path("m.vtu")), "2 components per voxel")
+    halves = write_vti("halves.vti", (6, 6, 6), [("Labels", "Float32", 1, [v + 0.5 for v in ball])], scalars="Labels")
+    assert_plain(cli.run("mesh", halves, "-o", cli.path("m.vtu")), "non-integer value 0.5")
+    floats = write_vti("floats.vti", (6, 6, 6), [("Labels", "Float32", 1, [float(v) for v in ball])], scalars="Labels")
+    result = cli.run("mesh", floats, "-o", cli.path("floats.vtu"))
+    assert result.returncode == 0, result.stderr
     print("OK: plain one-line errors")
+
+
+REGRESSIONS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "../Fuzz/Regressions")
+
+
+def write_vti(name, dims, arrays, scalars=None):
+    """An ASCII VTI of `dims` points; arrays: (name, VTK type, components, flat values)."""
+    extent = " ".join(f"0 {d - 1}" for d in dims)
+    body = "".join(f'<DataArray type="{t}" Name="{n}" NumberOfComponents="{c}" format="ascii">'
+                   f'{" ".join(str(v) for v in values)}</DataArray>' for n, t, c, values in arrays)
+    marked = f' Scalars="{scalars}"' if scalars else ""
+    path = cli.path(name)
+    with open(path, "w") as f:
+        f.write(f'<?xml version="1.0"?><VTKFile type="ImageData" version="1.0" byte_order="LittleEndian">'
+                f'<ImageData WholeExtent="{extent}" Origin="0 0 0" Spacing="1 1 1"><Piece Extent="{extent}">'
+                f'<PointData{marked}>{body}</PointData></Piece></ImageData></VTKFile>')
+    return path
 
 
 def case_png_mutations():

@@ -4,6 +4,7 @@
 #include "ImageReader.h"
 
 #include "ImageChecks.h"
+#include "NiftiCheck.h"
 #include "PngCheck.h"
 #include "SegmentationReader.h"
 #include "StringUtilities.h"
@@ -126,6 +127,11 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
   detail::CheckNrrdHeaderLines(path); // before NrrdIO parses it (whatever the extension)
+  const std::string lowerPath = Lower(path);
+  if (EndsWith(lowerPath, ".nii") || EndsWith(lowerPath, ".nii.gz"))
+  {
+    CheckNiftiGeometry(path); // before ITK turns the transform into a VNL matrix
+  }
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (!io)

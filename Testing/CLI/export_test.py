@@ -278,6 +278,14 @@ def case_plain_errors():
         f.write(b"NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n" + b"x" * 1200 +
                 b"\nencoding: raw\n\n" + bytes(8))
     assert_plain(cli.run("mesh", long_nrrd, "-o", cli.path("m.vtu")), "header line 5 is a field of 1200 characters")
+    # Found by fuzzing the NIfTI reader: a NaN in the sform made ITK's VNL abort the CLI; refused
+    # before ITK reads the header, plain or gzip-compressed.
+    nan_sform = os.path.join(REGRESSIONS, "read_nifti/nan_sform.nii")
+    assert_plain(cli.run("mesh", nan_sform, "-o", cli.path("m.vtu")), "srow_y[2] is not finite")
+    import gzip
+    with open(nan_sform, "rb") as f, gzip.open(cli.path("nan_sform.nii.gz"), "wb") as g:
+        g.write(f.read())
+    assert_plain(cli.run("mesh", cli.path("nan_sform.nii.gz"), "-o", cli.path("m.vtu")), "srow_y[2] is not finite")
     # Found by fuzzing the VTI reader: point data without a Scalars attribute reached the filter.
     # The only point array is the labels; two unmarked arrays, several components or fractional
     # floats are refused by the reader in one line.

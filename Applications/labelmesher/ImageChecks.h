@@ -21,6 +21,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -86,6 +87,41 @@ inline void CheckNrrdHeaderLines(const std::string& path)
       throw InputError("'" + path + "' is not a valid NRRD file (header line " + std::to_string(number) +
         " is a field of " + std::to_string(line.size()) + " characters; at most " +
         std::to_string(kLongestFieldLine) + " are read)");
+    }
+  }
+}
+
+/// MetaIO reads NDims values for each per-axis field (and NDims squared for TransformMatrix)
+/// with no bound: an NDims of 3e25 makes it read forever (found by fuzzing the MetaImage
+/// reader). Every NDims line of a .mha/.mhd header must give 1 to 8 axes.
+inline void CheckMetaImageDimensions(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int number = 1; number <= 64 && std::getline(in, line); ++number)
+  {
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos)
+    {
+      continue;
+    }
+    std::string key = line.substr(0, equals);
+    key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c); }), key.end());
+    if (key != "NDims")
+    {
+      if (key == "ElementDataFile")
+      {
+        return; // the header's last field
+      }
+      continue;
+    }
+    std::istringstream value(line.substr(equals + 1));
+    long long dims = 0;
+    std::string rest;
+    if (!(value >> dims) || (value >> rest) || dims < 1 || dims > 8)
+    {
+      throw InputError("'" + path + "' is not a valid MetaImage file (header line " + std::to_string(number) +
+        ": NDims must be 1 to 8)");
     }
   }
 }

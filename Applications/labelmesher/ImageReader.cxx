@@ -132,6 +132,10 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
   {
     CheckNiftiGeometry(path); // before ITK turns the transform into a VNL matrix
   }
+  if (EndsWith(lowerPath, ".mha") || EndsWith(lowerPath, ".mhd"))
+  {
+    detail::CheckMetaImageDimensions(path); // before MetaIO reads its per-axis fields
+  }
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (!io)

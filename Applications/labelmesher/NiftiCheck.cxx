@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <sstream>
 #include <vector>
 
 namespace labelmesher_cli
@@ -102,10 +103,20 @@ void CheckNiftiGeometry(const std::string& path)
   auto code = [&](std::size_t offset) {
     return layout->WideCodes ? fields.Get<std::int32_t>(offset) : fields.Get<std::int16_t>(offset);
   };
+  // ITK takes the transform's SVD in single precision, which never ends on entries near
+  // FLT_MAX (found by fuzzing too): a millimetre geometry is far inside this bound.
+  constexpr double kLargestGeometry = 1e9;
   auto require = [&](double value, const std::string& field) {
     if (!std::isfinite(value))
     {
       throw InputError("'" + path + "' is not a valid NIfTI file (its header's " + field + " is not finite)");
+    }
+    if (std::abs(value) > kLargestGeometry)
+    {
+      std::ostringstream text;
+      text << "'" << path << "' is not a valid NIfTI file (its header's " << field << " is " << value
+           << ", beyond +-1e9)";
+      throw InputError(text.str());
     }
   };
   for (int d = 1; d <= 3; ++d)

@@ -8,8 +8,9 @@
  * image's direction from the qform or sform through VNL, which aborts the
  * program on a non-finite matrix element (found by fuzzing the NIfTI reader).
  * The check reads the header (NIfTI-1 or NIfTI-2, either byte order, plain or
- * gzip-compressed) and requires finite voxel sizes and finite transform
- * parameters for each transform the header says is in use.
+ * gzip-compressed) and requires finite voxel sizes and transform parameters
+ * within +-1e9 for each transform the header says is in use (ITK's
+ * single-precision SVD of the transform never ends on entries near FLT_MAX).
  */
 
 #include <string>

@@ -286,6 +286,12 @@ def case_plain_errors():
     with open(nan_sform, "rb") as f, gzip.open(cli.path("nan_sform.nii.gz"), "wb") as g:
         g.write(f.read())
     assert_plain(cli.run("mesh", cli.path("nan_sform.nii.gz"), "-o", cli.path("m.vtu")), "srow_y[2] is not finite")
+    # Found by fuzzing too, two readers that never returned: a sform entry of -1.7e38 (ITK's float
+    # SVD of it loops) and an NDims of 3e25 (MetaIO reads that many values per axis field).
+    assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_nifti/huge_sform.nii"), "-o", cli.path("m.vtu")),
+                 "beyond +-1e9")
+    assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/huge_ndims.mha"), "-o", cli.path("m.vtu")),
+                 "NDims must be 1 to 8")
     # Found by fuzzing the VTI reader: point data without a Scalars attribute reached the filter.
     # The only point array is the labels; two unmarked arrays, several components or fractional
     # floats are refused by the reader in one line.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Builds the readers' fuzz targets (Testing/Fuzz, one per format: fuzz_read_nrrd, _nifti,
+# Builds the readers' fuzz targets (Testing/Fuzz, one per format: fuzz_read_nrrd, _nhdr, _nifti,
 # _metaimage, _vti, _png, _segmentation) with AFL++'s GCC mode (afl-g++, instrumented by afl-as:
 # Debian's ITK headers refuse clang, so libFuzzer cannot build them, and Debian 12's GCC plugin
 # afl-g++-fast aborts with "GCC and plugin have incompatible versions"), AddressSanitizer and
@@ -17,7 +17,7 @@ cd "$here/../.."
 seconds="${1:-30}"
 shift || true
 build=build-afl
-all=(nrrd nifti metaimage vti png segmentation)
+all=(nrrd nhdr nifti metaimage vti png segmentation)
 formats=("${@:-${all[@]}}")
 [ ${#formats[@]} -gt 0 ] || formats=("${all[@]}")
 targets=()

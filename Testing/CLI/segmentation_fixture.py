@@ -131,7 +131,7 @@ def write_seg_nrrd(path, layers, segments, spacing=(1, 1, 1), origin=(0, 0, 0), 
 
     payload = np.ascontiguousarray(data).tobytes()
     if encoding == "gzip":
-        payload = gzip.compress(payload)
+        payload = gzip.compress(payload, mtime=0)  # the same bytes on every run
     elif encoding != "raw":
         raise ValueError("encoding: gzip or raw")
     with open(path, "wb") as f:

@@ -32,15 +32,18 @@ def target(name):
     return path
 
 
-def nrrd(labels, encoding="raw", dtype="uint8", spacing=(1.0, 0.8, 1.3)):
+def nrrd(labels, encoding="raw", dtype="uint8", spacing=(1.0, 0.8, 1.3), data_file=None):
+    """An attached NRRD, or with data_file a detached header naming it followed by the data file's
+    bytes (the .nhdr target's layout: the header ends at its blank line)."""
     array = labels.astype(dtype)
     nz, ny, nx = array.shape
     body = array.tobytes()
     if encoding == "gzip":
-        body = gzip.compress(body)
+        body = gzip.compress(body, mtime=0)  # the same bytes on every run
     header = (f"NRRD0004\ntype: {dtype}\ndimension: 3\nspace: left-posterior-superior\nsizes: {nx} {ny} {nz}\n"
               f"space directions: ({spacing[0]},0,0) (0,{spacing[1]},0) (0,0,{spacing[2]})\n"
-              f"kinds: domain domain domain\nendian: little\nencoding: {encoding}\nspace origin: (0,0,0)\n\n")
+              f"kinds: domain domain domain\nendian: little\nencoding: {encoding}\nspace origin: (0,0,0)\n"
+              + (f"data file: {data_file}\n" if data_file else "") + "\n")
     return header.encode() + body
 
 
@@ -59,7 +62,7 @@ def nifti(labels, datatype=2, dtype="uint8", gz=False):
         struct.pack_into("<4f", header, 280 + 16 * row, *values)
     header[344:348] = b"n+1\0"
     data = bytes(header) + array.tobytes()
-    return gzip.compress(data) if gz else data
+    return gzip.compress(data, mtime=0) if gz else data
 
 
 def metaimage(labels, element="MET_UCHAR", dtype="uint8", compressed=False):
@@ -119,6 +122,12 @@ def main():
     for name, data in {"raw.nrrd": nrrd(crop), "gzip.nrrd": nrrd(crop, "gzip"),
                        "short.nrrd": nrrd(crop, dtype="int16"), "uint.nrrd": nrrd(crop, dtype="uint32"),
                        "slice.nrrd": nrrd(flat), "float.nrrd": nrrd(crop, dtype="float32")}.items():
+        open(os.path.join(d, name), "wb").write(data)
+    d = target("nhdr")
+    for name, data in {"raw.nhdr": nrrd(crop, data_file="input.raw"),
+                       "gzip.nhdr": nrrd(crop, "gzip", data_file="input.raw"),
+                       "short.nhdr": nrrd(crop, dtype="int16", data_file="input.raw"),
+                       "slice.nhdr": nrrd(flat, data_file="input.raw")}.items():
         open(os.path.join(d, name), "wb").write(data)
     d = target("nifti")
     for name, data in {"uchar.nii": nifti(crop), "short.nii": nifti(crop, 4, "int16"),

@@ -13,11 +13,43 @@ namespace labelmesher_cli
 {
 namespace
 {
-/// A filter stopped on request leaves an empty output (its abort path); a request that came
-/// during a stage that cannot stop (measuring) leaves a complete one, which is kept.
-bool StoppedOnRequest(vtkAlgorithm* filter, vtkUnstructuredGrid* output)
+/// What a filter's error means: the stage failed, or (the curver's untangling) the output is a
+/// marked mesh kept with the error.
+enum class OnError
 {
-  return filter->GetAbortExecute() != 0 && output->GetNumberOfCells() == 0;
+  Throw,
+  KeepOutput
+};
+
+/// What every stage does once its filter ran: keeps the run's first warning, turns the filter's
+/// error into a MeshingError (OnError::Throw) and refuses an output without cells. Returns false
+/// when the filter stopped on request, which leaves an empty output (its abort path); `out` then
+/// becomes an aborted outcome. A request during a stage that cannot stop (measuring) leaves a
+/// complete output, which is kept.
+bool FinishStage(vtkAlgorithm* filter, vtkUnstructuredGrid* output, const FilterMessages& messages,
+  const char* name, OnError onError, MeshingOutcome& out)
+{
+  if (out.Warning.empty())
+  {
+    out.Warning = messages.Warning;
+  }
+  if (!messages.Error.empty() && onError == OnError::Throw)
+  {
+    throw MeshingError(messages.Error);
+  }
+  if (filter->GetAbortExecute() != 0 && output->GetNumberOfCells() == 0)
+  {
+    out = MeshingOutcome{};
+    out.Aborted = true;
+    return false;
+  }
+  if (output->GetNumberOfCells() == 0)
+  {
+    throw MeshingError(!messages.Error.empty() ? messages.Error
+        : !messages.Warning.empty()            ? messages.Warning
+                                               : std::string("the ") + name + " produced no cells");
+  }
+  return true;
 }
 
 template <typename T>
@@ -39,23 +71,9 @@ void Decimate(vtkImageData* image, const MeshingSettings& settings, const Filter
   decimator->SetInputDataObject(0, out.Initial);
   decimator->SetInputDataObject(1, image);
   const FilterMessages messages = UpdateFilter(decimator, progress);
-  if (out.Warning.empty())
+  if (!FinishStage(decimator, decimator->GetOutput(), messages, "decimator", OnError::Throw, out))
   {
-    out.Warning = messages.Warning;
-  }
-  if (!messages.Error.empty())
-  {
-    throw MeshingError(messages.Error);
-  }
-  if (StoppedOnRequest(decimator, decimator->GetOutput()))
-  {
-    out = MeshingOutcome{};
-    out.Aborted = true;
     return;
-  }
-  if (decimator->GetOutput()->GetNumberOfCells() == 0)
-  {
-    throw MeshingError(messages.Warning.empty() ? "the decimator produced no cells" : messages.Warning);
   }
   out.Mesh = CopyOf(decimator->GetOutput());
   out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
@@ -74,21 +92,9 @@ void Curve(vtkImageData* image, const MeshingSettings& settings, const FilterPro
   curver->SetInputDataObject(0, out.Mesh);
   curver->SetInputDataObject(1, image);
   const FilterMessages messages = UpdateFilter(curver, progress);
-  if (out.Warning.empty())
+  if (!FinishStage(curver, curver->GetOutput(), messages, "curver", OnError::KeepOutput, out))
   {
-    out.Warning = messages.Warning;
-  }
-  if (StoppedOnRequest(curver, curver->GetOutput()))
-  {
-    out = MeshingOutcome{};
-    out.Aborted = true;
     return;
-  }
-  if (curver->GetOutput()->GetNumberOfCells() == 0)
-  {
-    throw MeshingError(!messages.Error.empty() ? messages.Error
-        : messages.Warning.empty()             ? "the curver produced no cells"
-                                               : messages.Warning);
   }
   out.CurveError = messages.Error;
   out.Curved = CopyOf(curver->GetOutput());
@@ -116,19 +122,9 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
   mesher->SetInputData(image);
   const FilterMessages messages = UpdateFilter(mesher, progress);
-  out.Warning = messages.Warning;
-  if (!messages.Error.empty())
+  if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))
   {
-    throw MeshingError(messages.Error);
-  }
-  if (StoppedOnRequest(mesher, mesher->GetOutput()))
-  {
-    out.Aborted = true;
     return out;
-  }
-  if (mesher->GetOutput()->GetNumberOfCells() == 0)
-  {
-    throw MeshingError(messages.Warning.empty() ? "the mesher produced no cells" : messages.Warning);
   }
   out.Initial = CopyOf(mesher->GetOutput());
   out.Mesh = out.Initial;

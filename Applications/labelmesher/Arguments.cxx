@@ -224,26 +224,26 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     else if (word == "--image-to-mesh")
     {
-      args.ImageToMeshDistance = ParseDistance(word, takeValue());
+      args.Settings.ImageToMeshDistance = ParseDistance(word, takeValue());
     }
     else if (word == "--mesh-to-image")
     {
-      args.MeshToImageDistance = ParseDistance(word, takeValue());
+      args.Settings.MeshToImageDistance = ParseDistance(word, takeValue());
     }
     else if (word == "--hausdorff")
     {
-      args.ImageToMeshDistance = args.MeshToImageDistance = ParseDistance(word, takeValue());
+      args.Settings.ImageToMeshDistance = args.Settings.MeshToImageDistance = ParseDistance(word, takeValue());
     }
     else if (word == "--include-background")
     {
       noValue();
-      args.IncludeBackground = true;
+      args.Settings.IncludeBackground = true;
     }
     else if (word == "--smoothness")
     {
       curveOption = curveOption.empty() ? word : curveOption;
-      args.Smoothness = ParseCount(word, takeValue(), 1);
-      if (args.Smoothness > 2)
+      args.Settings.Smoothness = ParseCount(word, takeValue(), 1);
+      if (args.Settings.Smoothness > 2)
       {
         throw UsageError("--smoothness expects 1 (C1) or 2 (C2)");
       }
@@ -251,32 +251,32 @@ Arguments ParseArguments(int argc, const char* const* argv)
     else if (word == "--tension")
     {
       curveOption = curveOption.empty() ? word : curveOption;
-      args.Tension = ParseTension(takeValue());
+      args.Settings.Tension = ParseTension(takeValue());
     }
     else if (word == "--max-untangling-steps")
     {
       curveOption = curveOption.empty() ? word : curveOption;
-      args.MaximumUntanglingSteps = ParseCount(word, takeValue(), 1);
+      args.Settings.MaximumUntanglingSteps = ParseCount(word, takeValue(), 1);
     }
     else if (word == "--max-shortening-rounds")
     {
       curveOption = curveOption.empty() ? word : curveOption;
-      args.MaximumShorteningRounds = ParseCount(word, takeValue(), 1);
+      args.Settings.MaximumShorteningRounds = ParseCount(word, takeValue(), 1);
     }
     else if (word == "--quality-iterations")
     {
       curveOption = curveOption.empty() ? word : curveOption;
-      args.QualityIterations = ParseCount(word, takeValue(), 0);
+      args.Settings.QualityIterations = ParseCount(word, takeValue(), 0);
     }
     else if (word == "--min-angle")
     {
-      args.MinimumAngle = ParseAngle(takeValue());
+      args.Settings.MinimumAngle = ParseAngle(takeValue());
       minAngleGiven = true;
     }
     else if (word == "--no-relocate")
     {
       noValue();
-      args.Relocate = false;
+      args.Settings.RelocateInteriorVertices = false;
       noRelocateGiven = true;
     }
     else if (word == "--no-decimate" || word == "--decimate")
@@ -291,7 +291,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
     else if (word == "--no-measure")
     {
       noValue();
-      args.Measure = false;
+      args.Settings.Measure = false;
     }
     else if (word == "--quiet" || word == "-q")
     {
@@ -320,12 +320,13 @@ Arguments ParseArguments(int argc, const char* const* argv)
     throw UsageError("unknown command '" + positional[0] + "': expected 'mesh' or 'curve'");
   }
   args.Command = positional[0];
-  args.Decimate = decimateOption.empty() || decimateOption == "--decimate";
-  if (noRelocateGiven && !args.Decimate)
+  args.Settings.Curve = args.Command == "curve";
+  args.Settings.Decimate = decimateOption.empty() || decimateOption == "--decimate";
+  if (noRelocateGiven && !args.Settings.Decimate)
   {
     throw UsageError("--no-relocate is a decimator option: it cannot go with --no-decimate");
   }
-  if (minAngleGiven && !args.Decimate)
+  if (minAngleGiven && !args.Settings.Decimate)
   {
     throw UsageError("--min-angle is the decimator's bound: it cannot go with --no-decimate");
   }

@@ -7,6 +7,8 @@
  * Command line of `labelmesher mesh|curve INPUT -o OUTPUT [options]`.
  */
 
+#include "MeshingPipeline.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,19 +31,8 @@ struct Arguments
   bool GmshVersion22 = false;       ///< --msh-version 2.2
   bool StlPerInterface = false;     ///< --stl-per-interface
   std::string Report;              ///< JSON report path; empty: none
-  double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
-  double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
-  bool IncludeBackground = false;
-  bool Measure = true;              ///< measure the output (angles, distances, topology)
-  bool Decimate = true;             ///< run vtkMeshDecimator after the mesher (default: mesh yes, curve no)
-  bool Relocate = true;             ///< the decimator moves interior vertices between rounds of merges
-  double MinimumAngle = 15.0;       ///< degrees, the decimator's angle bound; (0, 30] in 3D, (0, 45] in 2D
-  // curve only
-  int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)
-  double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless
-  int MaximumUntanglingSteps = 64;
-  int MaximumShorteningRounds = 8;
-  int QualityIterations = 0;
+  /// The pipeline's parameters, with their units and defaults (Curve: the command is "curve").
+  MeshingSettings Settings;
   bool Quiet = false;
   bool Help = false;
   bool Version = false;

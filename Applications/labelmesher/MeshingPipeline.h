@@ -34,9 +34,9 @@ struct MeshingSettings
 {
   double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
   double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
-  bool Decimate = true;
-  double MinimumAngle = 15.0;       ///< degrees, the decimator's bound
-  bool RelocateInteriorVertices = true;
+  bool Decimate = true;             ///< run vtkMeshDecimator after the mesher
+  double MinimumAngle = 15.0;       ///< degrees, the decimator's bound; (0, 30] in 3D, (0, 45] in 2D
+  bool RelocateInteriorVertices = true; ///< the decimator moves interior vertices between rounds
   bool IncludeBackground = false;   ///< keep background cells in the final mesh
   bool Measure = true;              ///< measure the final mesh (angles, distances, topology)
   // vtkBezierCurver (`labelmesher curve`): 2D images only; its defaults

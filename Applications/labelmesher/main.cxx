@@ -106,7 +106,7 @@ int Run(const Arguments& args)
     }
   }
   const double readSeconds = Seconds(readStart);
-  const bool curve = args.Command == "curve";
+  const bool curve = args.Settings.Curve;
   if (curve && !IsTwoDimensional(image))
   {
     throw RunError("'curve' needs a 2D image (one extent of a single slice); '" + args.Input +
@@ -121,20 +121,7 @@ int Run(const Arguments& args)
     }
   }
 
-  MeshingSettings settings;
-  settings.ImageToMeshDistance = args.ImageToMeshDistance;
-  settings.MeshToImageDistance = args.MeshToImageDistance;
-  settings.Decimate = args.Decimate;
-  settings.MinimumAngle = args.MinimumAngle;
-  settings.RelocateInteriorVertices = args.Relocate;
-  settings.IncludeBackground = args.IncludeBackground;
-  settings.Measure = args.Measure;
-  settings.Curve = curve;
-  settings.Smoothness = args.Smoothness;
-  settings.Tension = args.Tension;
-  settings.MaximumUntanglingSteps = args.MaximumUntanglingSteps;
-  settings.MaximumShorteningRounds = args.MaximumShorteningRounds;
-  settings.QualityIterations = args.QualityIterations;
+  const MeshingSettings& settings = args.Settings;
   TerminalProgress bars(!args.Quiet);
   const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
   bars.Finish();

@@ -91,6 +91,75 @@ inline void CheckNrrdHeaderLines(const std::string& path)
   }
 }
 
+/// The data file a detached header names, relative to the header's folder: a NRRD's
+/// "data file: NAME" (.nhdr) or a MetaImage's "ElementDataFile = NAME" (.mhd). Empty for attached
+/// data (none, LOCAL) and for the multi-file forms (LIST, a pattern with its range), which are
+/// left to the readers.
+inline std::filesystem::path DetachedDataFile(const std::string& path)
+{
+  constexpr int kMostHeaderLines = 1000; // past them it is data, not a header
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int number = 0; number < kMostHeaderLines && std::getline(in, line); ++number)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      break; // a NRRD header's end
+    }
+    const std::string l = Lower(line);
+    const bool nrrd = l.rfind("data file:", 0) == 0 || l.rfind("datafile:", 0) == 0;
+    const bool meta = l.rfind("elementdatafile", 0) == 0 && l.find('=') != std::string::npos;
+    if (!nrrd && !meta)
+    {
+      continue;
+    }
+    std::string name = line.substr(line.find(nrrd ? ':' : '=') + 1);
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    const std::string lowerName = Lower(name);
+    if (name.empty() || lowerName == "local" || lowerName.rfind("list", 0) == 0 ||
+      name.find_first_of(" \t") != std::string::npos)
+    {
+      return {};
+    }
+    const std::filesystem::path file(name);
+    return file.is_absolute() ? file : std::filesystem::path(path).parent_path() / file;
+  }
+  return {};
+}
+
+/// A detached header's data file must be a regular file: NrrdIO's message for a missing one calls
+/// the header invalid, and for a folder says only "fread got only 0 1-sized things"; a device such
+/// as /dev/stdin would block the reader.
+inline void CheckDetachedDataFile(const std::string& path)
+{
+  const std::string lower = Lower(path);
+  if (!EndsWith(lower, ".nhdr") && !EndsWith(lower, ".nrrd") && !EndsWith(lower, ".mhd") &&
+    !EndsWith(lower, ".mha"))
+  {
+    return;
+  }
+  const std::filesystem::path data = DetachedDataFile(path);
+  if (data.empty())
+  {
+    return;
+  }
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(data, ec);
+  const char* problem = !std::filesystem::exists(status) ? "does not exist"
+    : std::filesystem::is_directory(status)              ? "is a folder"
+    : !std::filesystem::is_regular_file(status)          ? "is not a regular file"
+                                                         : nullptr;
+  if (problem)
+  {
+    throw InputError("cannot read '" + path + "': its data file '" + data.string() + "' " + problem);
+  }
+}
+
 /// MetaIO reads NDims values for each per-axis field (and NDims squared for TransformMatrix)
 /// with no bound: an NDims of 3e25 makes it read forever (found by fuzzing the MetaImage
 /// reader). Every NDims line of a .mha/.mhd header must give 1 to 8 axes.
@@ -152,13 +221,14 @@ inline void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
   {
     header = 352; // NIfTI-1 header + extension flag; vox_offset is at least this
   }
-  else if (EndsWith(lower, ".mha") || EndsWith(lower, ".nrrd"))
+  else if (EndsWith(lower, ".mha") || EndsWith(lower, ".mhd") || EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr"))
   {
-    // Attached data: uncompressed only (the header is text, read it).
+    // Uncompressed data only, attached or in one detached data file (the header is text, read it).
     std::ifstream in(path, std::ios::binary);
     std::string line;
     bool raw = false;
     bool compressed = false; // MetaImage: CompressedData = True (raw otherwise, whatever the order)
+    bool detached = false;
     while (std::getline(in, line) && !line.empty() && line != "\r")
     {
       const std::string l = Lower(line);
@@ -172,20 +242,43 @@ inline void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io)
       }
       if (l.rfind("elementdatafile", 0) == 0)
       {
-        raw = EndsWith(lower, ".mha") ? !compressed : raw;
+        raw = EndsWith(lower, ".mha") || EndsWith(lower, ".mhd") ? !compressed : raw;
         if (l.find("local") == std::string::npos)
         {
-          return; // detached data file
+          detached = true;
         }
         break; // MetaImage data follows this line
       }
       if (l.rfind("data file:", 0) == 0 || l.rfind("datafile:", 0) == 0)
       {
-        return; // detached NRRD data
+        detached = true; // and the encoding may follow
       }
     }
     if (!raw)
     {
+      return;
+    }
+    if (detached)
+    {
+      // The data file alone holds the voxels (a byte or line skip only needs more).
+      const std::filesystem::path data = DetachedDataFile(path);
+      if (data.empty())
+      {
+        return; // several data files: the reader checks them
+      }
+      std::error_code ec;
+      fileSize = std::filesystem::file_size(data, ec);
+      if (ec)
+      {
+        throw InputError("cannot read '" + path + "': its data file '" + data.string() + "' cannot be read");
+      }
+      if (fileSize < bytes)
+      {
+        std::ostringstream s;
+        s << "'" << path << "' is truncated: the header announces " << bytes << " bytes of voxel data, its data file '"
+          << data.string() << "' holds " << fileSize;
+        throw InputError(s.str());
+      }
       return;
     }
     header = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));

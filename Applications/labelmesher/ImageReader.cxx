@@ -127,6 +127,7 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
   detail::CheckNrrdHeaderLines(path); // before NrrdIO parses it (whatever the extension)
+  detail::CheckDetachedDataFile(path);
   const std::string lowerPath = Lower(path);
   if (EndsWith(lowerPath, ".nii") || EndsWith(lowerPath, ".nii.gz"))
   {
@@ -141,11 +142,10 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
   if (!io)
   {
     // A known extension whose reader refuses the content: say which format the file fails to be.
-    const std::string lower = Lower(path);
-    const char* format = EndsWith(lower, ".nrrd") || EndsWith(lower, ".nhdr") ? "NRRD"
-      : EndsWith(lower, ".nii") || EndsWith(lower, ".nii.gz")                 ? "NIfTI"
-      : EndsWith(lower, ".mha") || EndsWith(lower, ".mhd")                    ? "MetaImage"
-                                                                              : nullptr;
+    const char* format = EndsWith(lowerPath, ".nrrd") || EndsWith(lowerPath, ".nhdr") ? "NRRD"
+      : EndsWith(lowerPath, ".nii") || EndsWith(lowerPath, ".nii.gz")                 ? "NIfTI"
+      : EndsWith(lowerPath, ".mha") || EndsWith(lowerPath, ".mhd")                    ? "MetaImage"
+                                                                                      : nullptr;
     if (format)
     {
       throw InputError("cannot read '" + path + "': not a valid " + format + " file (its header cannot be read)");

@@ -35,9 +35,10 @@ def run(*args):
     return subprocess.run([EXE, *args], capture_output=True, text=True, timeout=540)
 
 
-def write_nrrd(name, labels, nrrd_type, spacing=(1, 1, 1), truncate=0, extra=""):
+def write_nrrd(name, labels, nrrd_type, spacing=(1, 1, 1), truncate=0, extra="", detached=False):
     """Raw NRRD of a [z, y, x] array (written by hand: no writer can be trusted
-    to produce the broken files we need)."""
+    to produce the broken files we need); detached: a header NAME (.nhdr) and its
+    data file NAME.raw beside it, which the header names."""
     data = np.ascontiguousarray(labels).tobytes()
     if truncate:
         data = data[: len(data) - truncate]
@@ -51,23 +52,35 @@ def write_nrrd(name, labels, nrrd_type, spacing=(1, 1, 1), truncate=0, extra="")
         f"space directions: ({spacing[0]},0,0) (0,{spacing[1]},0) (0,0,{spacing[2]})\n"
         "space origin: (0,0,0)\n"
         "endian: little\n"
-        "encoding: raw\n" + extra + "\n"
+        "encoding: raw\n" + extra
+        + (f"data file: {os.path.basename(path(name))}.raw\n" if detached else "") + "\n"
     )
     with open(path(name), "wb") as f:
-        f.write(header.encode("ascii") + data)
+        f.write(header.encode("ascii") + (b"" if detached else data))
+    if detached:
+        with open(path(name) + ".raw", "wb") as f:
+            f.write(data)
     return path(name)
 
 
-def write_mha(name, labels, spacing):
+def write_mha(name, labels, spacing, truncate=0, detached=False):
+    """MetaImage of uint8 labels; detached: a header NAME (.mhd) and its data file NAME.raw."""
+    data = np.ascontiguousarray(labels.astype(np.uint8)).tobytes()
+    if truncate:
+        data = data[: len(data) - truncate]
     nz, ny, nx = labels.shape
+    data_file = os.path.basename(path(name)) + ".raw" if detached else "LOCAL"
     header = (
         "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
         "CompressedData = False\n"
         f"ElementSpacing = {spacing[0]} {spacing[1]} {spacing[2]}\n"
-        f"DimSize = {nx} {ny} {nz}\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n"
+        f"DimSize = {nx} {ny} {nz}\nElementType = MET_UCHAR\nElementDataFile = {data_file}\n"
     )
     with open(path(name), "wb") as f:
-        f.write(header.encode("ascii") + np.ascontiguousarray(labels.astype(np.uint8)).tobytes())
+        f.write(header.encode("ascii") + (b"" if detached else data))
+    if detached:
+        with open(path(name) + ".raw", "wb") as f:
+            f.write(data)
     return path(name)
 
 
@@ -201,6 +214,29 @@ def case_truncated_raw():
     labels = ball(10, 3.5).astype(np.uint8)
     expect_failure(run("mesh", write_nrrd("truncated.nrrd", labels, "uchar", truncate=300),
                        "-o", path("out.vtu")), "truncated")
+
+
+def case_detached_headers():
+    # A .nhdr or .mhd and its data file mesh as the attached file does; a data file that is
+    # missing, a folder or short gives one line naming it, and no output.
+    labels = ball(10, 3.5).astype(np.uint8)
+    writers = {"ball.nhdr": lambda **kw: write_nrrd("ball.nhdr", labels, "uchar", **kw),
+               "ball.mhd": lambda **kw: write_mha("ball.mhd", labels, (1, 1, 1), **kw)}
+    for name, write in writers.items():
+        header = write(detached=True)
+        result = run("mesh", header, "-o", path("mesh.vtu"), "--report", path("report.json"))
+        assert result.returncode == 0, result.stderr
+        check_mesh_and_report(path("mesh.vtu"), path("report.json"), VTK_TETRA, {1})
+        os.remove(header + ".raw")
+        expect_failure(run("mesh", header, "-o", path("out.vtu")), name + ".raw' does not exist")
+        os.mkdir(header + ".raw")
+        try:
+            expect_failure(run("mesh", header, "-o", path("out.vtu")), name + ".raw' is a folder")
+        finally:
+            os.rmdir(header + ".raw")
+        write(truncate=300, detached=True)
+        expect_failure(run("mesh", header, "-o", path("out.vtu")), "truncated")
+        assert not os.path.exists(path("out.vtu"))
 
 
 def case_truncated_nifti():

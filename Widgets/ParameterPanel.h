@@ -55,6 +55,7 @@ public:
   /// and whether the curver's controls apply; its smallest spacing (mm) converts distances to mm.
   void setImageGeometry(int dimension, double smallestSpacing);
   int imageDimension() const { return this->Dimension; }
+  double smallestSpacing() const { return this->SmallestSpacing; } ///< mm: one distance voxel
 
   double imageToMeshDistance() const { return this->ImageToMesh; } ///< voxels of the smallest spacing
   double meshToImageDistance() const { return this->MeshToImage; } ///< voxels of the smallest spacing

@@ -162,18 +162,19 @@ bool MainWindow::openImage(const QString& path)
   double spacing[3];
   this->Image->GetDimensions(dims);
   this->Image->GetSpacing(spacing);
-  // The filters' voxel: the smallest spacing over the meshed axes (a 2D image's slice axis is not).
-  int meshedAxes = 0;
+  // The filters' voxel (LabelImageConversion's PlaceLabels): a 2D image is meshed across its last
+  // single-slice axis, and the voxel is the smallest spacing over the other axes.
+  int normal = -1;
+  for (int a = 2; a >= 0 && normal < 0; --a)
+  {
+    normal = dims[a] == 1 ? a : -1;
+  }
   double smallest = std::numeric_limits<double>::max();
   for (int a = 0; a < 3; ++a)
   {
-    if (dims[a] > 1)
-    {
-      ++meshedAxes;
-      smallest = std::min(smallest, std::abs(spacing[a]));
-    }
+    smallest = a == normal ? smallest : std::min(smallest, std::abs(spacing[a]));
   }
-  this->Panel->setImageGeometry(meshedAxes == 3 ? 3 : 2, smallest == std::numeric_limits<double>::max() ? 1.0 : smallest);
+  this->Panel->setImageGeometry(normal < 0 ? 3 : 2, smallest);
   this->Report.reset();
   this->Curves.reset();
   this->View->clear();

@@ -5,7 +5,7 @@
 // that is not blank and a saved mesh read back; then it cancels a second run midway and checks the
 // window kept the first mesh and meshes again; bad paths give one sentence and change nothing; a
 // 2D slice is meshed and curved: the curver's guarantees in its report, det J sampled on every
-// curved cell shown, the curved mesh saved as .vtu only.
+// curved cell shown, the curved mesh saved as .vtu only; a one-row image gets the filters' voxel.
 #include "AngleHistogram.h"
 #include "CurvingChecks.h"
 #include "MainWindow.h"
@@ -444,6 +444,28 @@ private slots:
     QVERIFY(!Window->curveReport().has_value());
     QVERIFY(!Window->view()->showsCurvedCells());
     QCOMPARE(Window->view()->drawnEdges(), static_cast<vtkIdType>(0));
+  }
+
+  void oneRowImageHasTheFiltersVoxel()
+  {
+    // A 6 x 1 x 1 image is meshed across its last single-slice axis (z), as LabelImageConversion
+    // places it, so its voxel is the smaller of the x and y spacings (0.25 mm), though y too has a
+    // single slice; the panel's millimetres must use that voxel, the report's VoxelSize.
+    const QString path = Folder.filePath("row.nrrd");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    const QByteArray header = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 6 1 1\n"
+                              "spacings: 1 0.25 1\nencoding: raw\n\n";
+    QVERIFY(file.write(header + QByteArray("\0\1\1\1\1\0", 6)) == header.size() + 6);
+    file.close();
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QVERIFY(Window->openImage(path));
+    QCOMPARE(Window->parameters()->imageDimension(), 2);
+    QCOMPARE(Window->parameters()->smallestSpacing(), 0.25);
+    Window->parameters()->setCurve(false);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QCOMPARE(Window->report()->VoxelSize, Window->parameters()->smallestSpacing());
   }
 
   void cleanupTestCase() { Window.reset(); }

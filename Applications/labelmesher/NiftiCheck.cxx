@@ -91,6 +91,18 @@ void CheckNiftiGeometry(const std::string& path)
       swap = size != static_cast<std::int32_t>(candidate->Size);
     }
   }
+  // niftilib reads a file with the NIfTI magic ("n+1"/"ni1" at byte 344, "n+2"/"ni2" at byte 4)
+  // whatever its sizeof_hdr, and such a header escaped the checks below (a hang, found by
+  // fuzzing); the standard fixes sizeof_hdr, so a damaged one is refused.
+  auto magic = [&](std::size_t at, char version) {
+    return bytes.size() >= at + 4 && bytes[at] == 'n' && (bytes[at + 1] == '+' || bytes[at + 1] == 'i') &&
+      bytes[at + 2] == version && bytes[at + 3] == '\0';
+  };
+  if (!layout && (magic(344, '1') || magic(4, '2')))
+  {
+    throw InputError("'" + path + "' is not a valid NIfTI file (its header's sizeof_hdr is " + std::to_string(size) +
+      ", expected " + (magic(344, '1') ? "348" : "540") + ")");
+  }
   if (!layout || bytes.size() < layout->Size)
   {
     return; // not a NIfTI header ITK would read; ITK says why

@@ -8,6 +8,7 @@
 #include "PngCheck.h"
 #include "SegmentationReader.h"
 #include "StringUtilities.h"
+#include "TextHeader.h"
 #include "VTKMessages.h"
 
 #include "itkImage.h"
@@ -126,16 +127,12 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
 
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
-  detail::CheckNrrdHeaderLines(path); // before NrrdIO parses it (whatever the extension)
-  detail::CheckDetachedDataFile(path);
+  const detail::TextHeader header = detail::ReadTextHeader(path); // before NrrdIO or MetaIO parses it
+  detail::CheckDetachedDataFile(path, header);
   const std::string lowerPath = Lower(path);
   if (EndsWith(lowerPath, ".nii") || EndsWith(lowerPath, ".nii.gz"))
   {
     CheckNiftiGeometry(path); // before ITK turns the transform into a VNL matrix
-  }
-  if (EndsWith(lowerPath, ".mha") || EndsWith(lowerPath, ".mhd"))
-  {
-    detail::CheckMetaImageDimensions(path); // before MetaIO reads its per-axis fields
   }
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
@@ -169,7 +166,7 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
         " dimensions: expected a 2D or 3D label image");
     }
   }
-  CheckNotTruncated(path, io);
+  CheckNotTruncated(path, io, header);
 
   using C = itk::IOComponentEnum;
   switch (io->GetComponentType())

@@ -5,6 +5,7 @@
 
 #include "ImageChecks.h"
 #include "StringUtilities.h"
+#include "TextHeader.h"
 
 #include "itkImageFileReader.h"
 #include "itkMetaDataObject.h"
@@ -452,7 +453,8 @@ LabeledImage Read(const std::string& path)
   {
     throw InputError("'" + path + "' is not a NRRD file, which a .seg.nrrd segmentation must be");
   }
-  detail::CheckNrrdHeaderLines(path);
+  const detail::TextHeader header = detail::ReadTextHeader(path);
+  detail::CheckDetachedDataFile(path, header);
   io->SetFileName(path);
   io->ReadImageInformation();
   detail::CheckHeaderSpacing(io, path);
@@ -466,7 +468,7 @@ LabeledImage Read(const std::string& path)
     }
   }
   const unsigned int layers = io->GetNumberOfComponents();
-  detail::CheckNotTruncated(path, io);
+  detail::CheckNotTruncated(path, io, header);
 
   LabeledImage result;
   std::vector<Segment> segments = ReadSegments(io->GetMetaDataDictionary(), layers, path);

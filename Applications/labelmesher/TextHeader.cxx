@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "TextHeader.h"
+
+#include "ImageReader.h"
+#include "StringUtilities.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace labelmesher_cli
+{
+namespace detail
+{
+namespace
+{
+
+std::string Trimmed(const std::string& text)
+{
+  const std::size_t first = text.find_first_not_of(" \t");
+  return first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+/// One line of the header without its line ending (headers written on Windows end in "\r\n").
+bool NextLine(std::istream& in, std::string& line)
+{
+  if (!std::getline(in, line))
+  {
+    return false;
+  }
+  if (!line.empty() && line.back() == '\r')
+  {
+    line.pop_back();
+  }
+  return true;
+}
+
+/// The data file a header names, relative to the header's folder; empty for the multi-file forms
+/// (LIST, a pattern with its range) and for LOCAL.
+std::filesystem::path DataFileNamed(const std::string& name, const std::string& headerPath)
+{
+  const std::string lower = Lower(name);
+  if (name.empty() || lower == "local" || lower.rfind("list", 0) == 0 || name.find_first_of(" \t") != std::string::npos)
+  {
+    return {};
+  }
+  const std::filesystem::path file(name);
+  return file.is_absolute() ? file : std::filesystem::path(headerPath).parent_path() / file;
+}
+
+/// NRRD's "field: value" lines after the magic, up to the blank line that ends the header.
+///
+/// Debian's NrrdIO (ITK 5.2) formats each parse error, the header line quoted, into a fixed
+/// 1,025-byte stack buffer (biff's vsprintf): a malformed field line of about a thousand
+/// characters overruns it and aborts the program (found by fuzzing the .seg.nrrd reader). Field
+/// lines are short in every real file; comments and key/value lines (":=", which may be long, as
+/// Slicer's conversion parameters are) are never quoted, so only field lines are limited.
+void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& header)
+{
+  constexpr std::size_t kLongestFieldLine = 800;
+  std::string line;
+  for (int number = 2; NextLine(in, line); ++number)
+  {
+    if (line.empty())
+    {
+      header.Length = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
+      return;
+    }
+    if (line[0] == '#' || line.find(":=") != std::string::npos)
+    {
+      continue;
+    }
+    if (line.size() > kLongestFieldLine)
+    {
+      throw InputError("'" + path + "' is not a valid NRRD file (header line " + std::to_string(number) +
+        " is a field of " + std::to_string(line.size()) + " characters; at most " +
+        std::to_string(kLongestFieldLine) + " are read)");
+    }
+    const std::string lower = Lower(line);
+    if (lower.rfind("encoding:", 0) == 0)
+    {
+      header.RawData = lower.find("raw") != std::string::npos;
+    }
+    else if (lower.rfind("data file:", 0) == 0 || lower.rfind("datafile:", 0) == 0)
+    {
+      header.Detached = true; // the voxels are never in the header's file, whatever the name
+      header.DataFile = DataFileNamed(Trimmed(line.substr(line.find(':') + 1)), path);
+    }
+  }
+}
+
+/// MetaImage's "Key = Value" lines, up to ElementDataFile, which is the last.
+///
+/// MetaIO reads NDims values for each per-axis field (and NDims squared for TransformMatrix) with
+/// no bound: an NDims of 3e25 makes it read forever (found by fuzzing the MetaImage reader).
+void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& header)
+{
+  constexpr int kMostHeaderLines = 1000; // past them it is data, not a header
+  bool compressed = false;               // CompressedData = True; raw otherwise, whatever the order
+  std::string line;
+  for (int number = 1; number <= kMostHeaderLines && NextLine(in, line); ++number)
+  {
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos)
+    {
+      continue;
+    }
+    std::string key = Lower(line.substr(0, equals));
+    key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c); }), key.end());
+    const std::string value = Trimmed(line.substr(equals + 1));
+    if (key == "ndims")
+    {
+      std::istringstream field(value);
+      long long dims = 0;
+      std::string rest;
+      if (!(field >> dims) || (field >> rest) || dims < 1 || dims > 8)
+      {
+        throw InputError("'" + path + "' is not a valid MetaImage file (header line " + std::to_string(number) +
+          ": NDims must be 1 to 8)");
+      }
+    }
+    else if (key == "compresseddata")
+    {
+      compressed = Lower(value).find("true") != std::string::npos;
+    }
+    else if (key == "elementdatafile")
+    {
+      header.RawData = !compressed;
+      header.Detached = Lower(value) != "local";
+      header.DataFile = DataFileNamed(value, path);
+      header.Length = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
+      return;
+    }
+  }
+}
+
+} // namespace
+
+TextHeader ReadTextHeader(const std::string& path)
+{
+  TextHeader header;
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  std::string first;
+  // The magic alone first: a binary file's "first line" may be all of it.
+  if (in.read(magic, 4) && std::string(magic, 4) == "NRRD" && NextLine(in, first))
+  {
+    header.Kind = TextHeader::Format::Nrrd;
+    ReadNrrdFields(in, path, header);
+  }
+  // MetaImage has no magic: its readers go by the name. A .mha that starts like a NRRD is checked
+  // as both, since which reader ITK's factory tries first is not ours to rely on.
+  const std::string lower = Lower(path);
+  if (EndsWith(lower, ".mha") || EndsWith(lower, ".mhd"))
+  {
+    header = TextHeader();
+    header.Kind = TextHeader::Format::MetaImage;
+    in.clear();
+    in.seekg(0);
+    ReadMetaImageFields(in, path, header);
+  }
+  return header;
+}
+
+void CheckDetachedDataFile(const std::string& path, const TextHeader& header)
+{
+  if (!header.Detached || header.DataFile.empty())
+  {
+    return;
+  }
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(header.DataFile, ec);
+  const char* problem = !std::filesystem::exists(status) ? "does not exist"
+    : std::filesystem::is_directory(status)              ? "is a folder"
+    : !std::filesystem::is_regular_file(status)          ? "is not a regular file"
+                                                         : nullptr;
+  if (problem)
+  {
+    throw InputError("cannot read '" + path + "': its data file '" + header.DataFile.string() + "' " + problem);
+  }
+}
+
+void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io, const TextHeader& header)
+{
+  std::uintmax_t start = 0; // where the voxels begin in the file that holds them
+  std::filesystem::path holder = path;
+  if (EndsWith(Lower(path), ".nii"))
+  {
+    start = 352; // NIfTI-1 header + extension flag; vox_offset is at least this
+  }
+  else if (header.Kind != TextHeader::Format::Other && header.RawData)
+  {
+    if (header.Detached && header.DataFile.empty())
+    {
+      return; // several data files: the reader checks them
+    }
+    // A detached data file alone holds the voxels (a byte or line skip only needs more).
+    holder = header.Detached ? header.DataFile : std::filesystem::path(path);
+    start = header.Detached ? 0 : header.Length;
+  }
+  else
+  {
+    return; // compressed, or a format whose length the reader checks
+  }
+  const std::uintmax_t bytes = io->GetImageSizeInBytes();
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(holder, ec);
+  if (ec)
+  {
+    throw InputError(header.Detached ? "cannot read '" + path + "': its data file '" + holder.string() + "' cannot be read"
+                                     : "cannot read '" + path + "': " + ec.message());
+  }
+  if (size < start + bytes)
+  {
+    std::ostringstream s;
+    s << "'" << path << "' is truncated: the header announces " << bytes << " bytes of voxel data, ";
+    if (header.Detached)
+    {
+      s << "its data file '" << holder.string() << "' holds " << size;
+    }
+    else
+    {
+      s << "the file holds at most " << (size > start ? size - start : 0);
+    }
+    throw InputError(s.str());
+  }
+}
+
+} // namespace detail
+} // namespace labelmesher_cli

@@ -167,6 +167,7 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
     }
   }
   CheckNotTruncated(path, io, header);
+  detail::CheckCompressedVoxels(path, io, header);
 
   using C = itk::IOComponentEnum;
   switch (io->GetComponentType())

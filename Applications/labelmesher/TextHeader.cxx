@@ -4,10 +4,13 @@
 #include "ImageReader.h"
 #include "StringUtilities.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace labelmesher_cli
 {
@@ -94,10 +97,12 @@ void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& heade
 ///
 /// MetaIO reads NDims values for each per-axis field (and NDims squared for TransformMatrix) with
 /// no bound: an NDims of 3e25 makes it read forever (found by fuzzing the MetaImage reader).
+/// Voxels stored as text (a BinaryData that MetaIO does not read as true) are refused: ITK 5.2
+/// frees memory it does not own when it reads them into a 1D or 2D image (found the same way).
 void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& header)
 {
   constexpr int kMostHeaderLines = 1000; // past them it is data, not a header
-  bool compressed = false;               // CompressedData = True; raw otherwise, whatever the order
+  bool binary = true;                    // ITK reads binary voxels when BinaryData is absent
   std::string line;
   for (int number = 1; number <= kMostHeaderLines && NextLine(in, line); ++number)
   {
@@ -122,11 +127,26 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     }
     else if (key == "compresseddata")
     {
-      compressed = Lower(value).find("true") != std::string::npos;
+      header.Compressed = Lower(value).find("true") != std::string::npos;
+    }
+    else if (key == "compresseddatasize")
+    {
+      std::istringstream field(value);
+      long long bytes = 0; // signed: ">> unsigned" would read "-5" as a huge size
+      header.CompressedBytes = field >> bytes && bytes > 0 ? static_cast<std::uintmax_t>(bytes) : 0;
+    }
+    else if (key == "binarydata")
+    {
+      binary = !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1'); // as MetaIO reads it
     }
     else if (key == "elementdatafile")
     {
-      header.RawData = !compressed;
+      if (!binary)
+      {
+        throw InputError("'" + path + "' stores its voxels as text (BinaryData is not True), which "
+          "labelmesher does not read: write them as binary");
+      }
+      header.RawData = !header.Compressed;
       header.Detached = Lower(value) != "local";
       header.DataFile = DataFileNamed(value, path);
       header.Length = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
@@ -225,6 +245,90 @@ void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io, const Text
     }
     throw InputError(s.str());
   }
+}
+
+void CheckCompressedVoxels(const std::string& path, itk::ImageIOBase* io, const TextHeader& header)
+{
+  if (header.Kind != TextHeader::Format::MetaImage || !header.Compressed || (header.Detached && header.DataFile.empty()))
+  {
+    return;
+  }
+  // Without the size MetaIO inflates nothing and hands on the uninitialised buffer as voxels.
+  if (header.CompressedBytes == 0)
+  {
+    throw InputError("'" + path + "' is not a valid MetaImage file (CompressedData = True needs a positive "
+      "CompressedDataSize)");
+  }
+  const std::filesystem::path holder = header.Detached ? header.DataFile : std::filesystem::path(path);
+  const std::uintmax_t start = header.Detached ? 0 : header.Length;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(holder, ec);
+  std::ifstream in(holder, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(start));
+  if (ec || !in)
+  {
+    throw InputError("cannot read '" + path + "': its compressed voxel data cannot be read");
+  }
+  if (header.CompressedBytes > size - start)
+  {
+    std::ostringstream s;
+    s << "'" << path << "' is truncated: its CompressedDataSize is " << header.CompressedBytes << " bytes, the "
+      << (header.Detached ? "data file" : "file") << " holds " << size - start;
+    throw InputError(s.str());
+  }
+  // Inflate as MetaIO does (zlib or gzip headers), into a small buffer: only the count is kept.
+  z_stream stream{};
+  if (inflateInit2(&stream, 15 + 32) != Z_OK)
+  {
+    throw InputError("cannot read '" + path + "': zlib cannot start (out of memory)");
+  }
+  const std::uintmax_t wanted = io->GetImageSizeInBytes();
+  std::uintmax_t left = header.CompressedBytes;
+  std::vector<unsigned char> input(1 << 16), output(1 << 16);
+  std::uintmax_t produced = 0;
+  int status = Z_OK;
+  while (status == Z_OK && produced < wanted)
+  {
+    if (stream.avail_in == 0)
+    {
+      in.read(reinterpret_cast<char*>(input.data()),
+        static_cast<std::streamsize>(std::min<std::uintmax_t>(input.size(), left)));
+      const std::streamsize got = in.gcount();
+      if (got <= 0)
+      {
+        break; // the data ends before its stream does
+      }
+      left -= static_cast<std::uintmax_t>(got);
+      stream.next_in = input.data();
+      stream.avail_in = static_cast<uInt>(got);
+    }
+    stream.next_out = output.data();
+    stream.avail_out = static_cast<uInt>(output.size());
+    status = inflate(&stream, Z_NO_FLUSH);
+    produced += output.size() - stream.avail_out;
+  }
+  const std::string message = stream.msg ? stream.msg : "";
+  inflateEnd(&stream);
+  if (produced >= wanted)
+  {
+    return;
+  }
+  std::ostringstream s;
+  if (status == Z_NEED_DICT)
+  {
+    s << "'" << path << "' is not a valid MetaImage file (its compressed voxel data asks for a preset zlib dictionary)";
+  }
+  else if (status < 0 && status != Z_BUF_ERROR)
+  {
+    s << "'" << path << "' is not a valid MetaImage file (its compressed voxel data is not a zlib stream"
+      << (message.empty() ? "" : ": " + message) << ")";
+  }
+  else
+  {
+    s << "'" << path << "' is truncated: the header announces " << wanted << " bytes of voxel data, its compressed data"
+      << (status == Z_STREAM_END ? " inflates to " : " ends after ") << produced;
+  }
+  throw InputError(s.str());
 }
 
 } // namespace detail

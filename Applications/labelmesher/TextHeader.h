@@ -30,7 +30,9 @@ struct TextHeader
     MetaImage
   };
   Format Kind = Format::Other;
-  bool RawData = false;  ///< the voxels are stored uncompressed
+  bool RawData = false;    ///< the voxels are stored as uncompressed binary
+  bool Compressed = false; ///< MetaImage: zlib-compressed voxels (CompressedData = True)
+  std::uintmax_t CompressedBytes = 0; ///< MetaImage: CompressedDataSize, 0 when not given
   bool Detached = false; ///< the voxels are in another file than the header
   /// That file, relative to the header's folder resolved; empty when the voxels are attached or
   /// spread over several files (LIST, a name pattern with its range), which the readers check.
@@ -39,7 +41,8 @@ struct TextHeader
 };
 
 /// Reads the header of `path` once. Throws InputError for a NRRD field line longer than NrrdIO's
-/// error buffer or a MetaImage NDims outside 1 to 8; a file of another format gives Kind Other.
+/// error buffer, a MetaImage NDims outside 1 to 8 or MetaImage voxels stored as text; a file of
+/// another format gives Kind Other.
 TextHeader ReadTextHeader(const std::string& path);
 
 /// A detached header's data file must be a regular file: NrrdIO's message for a missing one calls
@@ -50,6 +53,12 @@ void CheckDetachedDataFile(const std::string& path, const TextHeader& header);
 /// Uncompressed voxels must be as long as the header says (ITK reads past the end of a truncated
 /// raw file without complaint): NRRD and MetaImage from `header`, NIfTI from its fixed header.
 void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io, const TextHeader& header);
+
+/// Compressed MetaImage voxels must be one zlib (or gzip) stream, CompressedDataSize bytes long,
+/// that inflates to the bytes the header announces. ITK 5.2's MetaIO loops forever on a stream
+/// that asks for a preset dictionary and leaks on a broken one (both found by fuzzing the
+/// MetaImage reader); without a CompressedDataSize it returns uninitialised memory as voxels.
+void CheckCompressedVoxels(const std::string& path, itk::ImageIOBase* io, const TextHeader& header);
 
 } // namespace detail
 } // namespace labelmesher_cli

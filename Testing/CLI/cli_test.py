@@ -278,6 +278,25 @@ def case_compressed_metaimage():
     with open(path("short.mha"), "wb") as f:
         f.write(raw.encode() + labels.tobytes()[:500])
     expect_failure(run("mesh", path("short.mha"), "-o", path("out.vtu")), "truncated")
+    # ITK 5.2's MetaIO returns uninitialised memory as voxels when CompressedDataSize is missing,
+    # and takes a stream cut short or inflating to too few bytes without complaint.
+    cases = {"no_size.mha": (header.replace(f"CompressedDataSize = {len(body)}\n", ""), body,
+                             "needs a positive CompressedDataSize"),
+             "size_beyond_file.mha": (header, body[: len(body) - 10], "its CompressedDataSize is"),
+             "cut_stream.mha": (header.replace(f"= {len(body)}\n", f"= {len(body) // 2}\n"), body[: len(body) // 2],
+                                "its compressed data ends after"),
+             "few_bytes.mha": (header.replace(f"= {len(body)}\n", f"= {len(zlib.compress(b'x' * 500))}\n"),
+                               zlib.compress(b"x" * 500), "inflates to 500"),
+             "not_zlib.mha": (header, bytes(len(body)), "not a zlib stream")}
+    for name, (text, data, message) in cases.items():
+        with open(path(name), "wb") as f:
+            f.write(text.encode() + data)
+        expect_failure(run("mesh", path(name), "-o", path("out.vtu")), message)
+    # Voxels stored as text are refused: ITK 5.2 frees memory it does not own on 1D and 2D ones.
+    text = raw.replace("BinaryData = True", "BinaryData = False")
+    with open(path("text.mha"), "wb") as f:
+        f.write(text.encode() + " ".join(str(v) for v in labels.ravel()).encode())
+    expect_failure(run("mesh", path("text.mha"), "-o", path("out.vtu")), "stores its voxels as text")
 
 
 def case_negative_spacing():

@@ -292,6 +292,13 @@ def case_plain_errors():
                  "beyond +-1e9")
     assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/huge_ndims.mha"), "-o", cli.path("m.vtu")),
                  "NDims must be 1 to 8")
+    # Two more from the MetaImage reader: compressed voxels whose zlib header asks for a preset
+    # dictionary (MetaIO's inflate loop never ends) and a 1D image whose voxels are text (ITK frees
+    # memory it does not own).
+    assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/preset_dictionary.mha"), "-o",
+                         cli.path("m.vtu")), "asks for a preset zlib dictionary")
+    assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/text_voxels_1d.mha"), "-o",
+                         cli.path("m.vtu")), "stores its voxels as text")
     # And a NIfTI-1 header whose sizeof_hdr is damaged (1116): niftilib reads it by its magic, so it
     # escaped the geometry check and its sform of -1.7e38 hung ITK.
     assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_nifti/damaged_sizeof_hdr.nii"), "-o",

@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -46,6 +47,25 @@ using detail::GeometryFromITK;
 using detail::VoxelText;
 
 // ---- ITK: NRRD, NIfTI, MetaImage ----------------------------------------------
+
+/// MetaIO writes its complaints ("Incomplete file record definition", "Uncompress failed") to
+/// std::cerr as it reads. They would break the CLI's one-line errors, and ITK's exception or our
+/// own checks say what is wrong, so std::cerr goes nowhere while ITK reads.
+class QuietStandardError
+{
+public:
+  QuietStandardError()
+    : Saved(std::cerr.rdbuf(this->Discarded.rdbuf()))
+  {
+  }
+  ~QuietStandardError() { std::cerr.rdbuf(this->Saved); }
+  QuietStandardError(const QuietStandardError&) = delete;
+  QuietStandardError& operator=(const QuietStandardError&) = delete;
+
+private:
+  std::ostringstream Discarded;
+  std::streambuf* Saved;
+};
 
 template <typename TPixel>
 typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::ImageIOBase* io)
@@ -128,6 +148,7 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
   const detail::TextHeader header = detail::ReadTextHeader(path); // before NrrdIO or MetaIO parses it
+  const QuietStandardError quiet;
   detail::CheckDetachedDataFile(path, header);
   const std::string lowerPath = Lower(path);
   if (EndsWith(lowerPath, ".nii") || EndsWith(lowerPath, ".nii.gz"))

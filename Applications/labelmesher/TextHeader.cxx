@@ -52,6 +52,17 @@ std::filesystem::path DataFileNamed(const std::string& name, const std::string& 
   return file.is_absolute() ? file : std::filesystem::path(headerPath).parent_path() / file;
 }
 
+/// A data file's name as the header gives it, refused when it holds control characters (a NUL
+/// ends it early for the C readers, and the message would print them).
+std::string DataFileName(const std::string& name, const std::string& path, const char* format)
+{
+  if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+  {
+    throw InputError("'" + path + "' is not a valid " + format + " file (its data file name holds control characters)");
+  }
+  return name;
+}
+
 /// NRRD's "field: value" lines after the magic, up to the blank line that ends the header.
 ///
 /// Debian's NrrdIO (ITK 5.2) formats each parse error, the header line quoted, into a fixed
@@ -88,7 +99,7 @@ void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& heade
     else if (lower.rfind("data file:", 0) == 0 || lower.rfind("datafile:", 0) == 0)
     {
       header.Detached = true; // the voxels are never in the header's file, whatever the name
-      header.DataFile = DataFileNamed(Trimmed(line.substr(line.find(':') + 1)), path);
+      header.DataFile = DataFileNamed(DataFileName(Trimmed(line.substr(line.find(':') + 1)), path, "NRRD"), path);
     }
   }
 }
@@ -99,6 +110,7 @@ void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& heade
 /// no bound: an NDims of 3e25 makes it read forever (found by fuzzing the MetaImage reader).
 /// Voxels stored as text (a BinaryData that MetaIO does not read as true) are refused: ITK 5.2
 /// frees memory it does not own when it reads them into a 1D or 2D image (found the same way).
+/// So are voxels spread over several data files.
 void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& header)
 {
   constexpr int kMostHeaderLines = 1000; // past them it is data, not a header
@@ -106,14 +118,21 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
   std::string line;
   for (int number = 1; number <= kMostHeaderLines && NextLine(in, line); ++number)
   {
-    const std::size_t equals = line.find('=');
-    if (equals == std::string::npos)
+    // MetaIO's own reading of a field: the name ends at '=' or ':' and, being a C string, at a
+    // NUL; the value follows the separators. Spaces and case are ignored here, to match more.
+    const std::size_t separator = line.find_first_of("=:");
+    if (separator == std::string::npos)
     {
       continue;
     }
-    std::string key = Lower(line.substr(0, equals));
+    std::string key = Lower(line.substr(0, std::min(separator, line.find('\0'))));
     key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c); }), key.end());
-    const std::string value = Trimmed(line.substr(equals + 1));
+    const std::string rest = line.substr(line.find_first_not_of("=: \t", separator) == std::string::npos
+        ? line.size()
+        : line.find_first_not_of("=: \t", separator));
+    const std::string value = Trimmed(key == "elementdatafile" ? rest : rest.substr(0, rest.find('\0')));
+    // MetaIO's booleans: true when the value starts with T, t or 1.
+    const bool yes = !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
     if (key == "ndims")
     {
       std::istringstream field(value);
@@ -127,7 +146,7 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     }
     else if (key == "compresseddata")
     {
-      header.Compressed = Lower(value).find("true") != std::string::npos;
+      header.Compressed = yes;
     }
     else if (key == "compresseddatasize")
     {
@@ -137,7 +156,7 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     }
     else if (key == "binarydata")
     {
-      binary = !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1'); // as MetaIO reads it
+      binary = yes;
     }
     else if (key == "elementdatafile")
     {
@@ -148,7 +167,18 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
       }
       header.RawData = !header.Compressed;
       header.Detached = Lower(value) != "local";
-      header.DataFile = DataFileNamed(value, path);
+      header.DataFile = DataFileNamed(DataFileName(value, path, "MetaImage"), path);
+      // LIST or a file-name pattern: MetaIO parses the pattern's numbers unchecked (a fuzzed one
+      // made it allocate without bound), and real label images come in one file.
+      if (value.empty())
+      {
+        throw InputError("'" + path + "' is not a valid MetaImage file (ElementDataFile names no file)");
+      }
+      if (header.Detached && header.DataFile.empty())
+      {
+        throw InputError("'" + path + "' spreads its voxels over several data files (ElementDataFile LIST or a "
+          "pattern), which labelmesher does not read: write them to one file");
+      }
       header.Length = static_cast<std::uintmax_t>(std::max<std::streamoff>(0, in.tellg()));
       return;
     }

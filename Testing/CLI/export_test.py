@@ -299,6 +299,28 @@ def case_plain_errors():
                          cli.path("m.vtu")), "asks for a preset zlib dictionary")
     assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/text_voxels_1d.mha"), "-o",
                          cli.path("m.vtu")), "stores its voxels as text")
+    # And three more, each aborting ITK in the sanitizer build or never returning: data file names
+    # that are a pattern or hold control characters, and a pattern after an NDims of -3 whose field
+    # name ends in a NUL (MetaIO's C-string compare still reads it as NDims).
+    for name, fragment in (("data_file_pattern.mha", "several data files"),
+                           ("pattern_and_nul_in_ndims.mha", "several data files"),
+                           ("binary_data_file_name.mha", "data file name holds control characters")):
+        assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage", name), "-o", cli.path("m.vtu")),
+                     fragment)
+    # MetaImage fields as MetaIO reads them: a name ending at a NUL or a ':', a boolean that is 1.
+    # And MetaIO's own lines on std::cerr ("Incomplete file record definition", ...) stay unprinted.
+    header = "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\n"
+    for name, text, fragment in (
+            ("nul_ndims.mha", header.replace("NDims = 3", "NDims\0\x80 = -3") + "ElementDataFile = LOCAL\n" + "\1" * 8,
+             "NDims must be 1 to 8"),
+            ("colon_ndims.mha", header.replace("NDims = 3", "NDims: 300000000000") + "ElementDataFile = LOCAL\n" + "\1" * 8,
+             "NDims must be 1 to 8"),
+            ("compressed_one.mha", header + "CompressedData = 1\nCompressedDataSize = 8\nElementDataFile = LOCAL\n" + "\1" * 8,
+             "not a zlib stream"),
+            ("incomplete.mha", header + "ElementSpacing =", "cannot read")):
+        with open(cli.path(name), "wb") as f:
+            f.write(text.encode("latin-1"))
+        assert_plain(cli.run("mesh", cli.path(name), "-o", cli.path("m.vtu")), fragment)
     # And a NIfTI-1 header whose sizeof_hdr is damaged (1116): niftilib reads it by its magic, so it
     # escaped the geometry check and its sform of -1.7e38 hung ITK.
     assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_nifti/damaged_sizeof_hdr.nii"), "-o",

@@ -40,7 +40,8 @@ def nrrd(labels, encoding="raw", dtype="uint8", spacing=(1.0, 0.8, 1.3), data_fi
     body = array.tobytes()
     if encoding == "gzip":
         body = gzip.compress(body, mtime=0)  # the same bytes on every run
-    header = (f"NRRD0004\ntype: {dtype}\ndimension: 3\nspace: left-posterior-superior\nsizes: {nx} {ny} {nz}\n"
+    nrrd_type = {"float32": "float", "float64": "double"}.get(dtype, dtype)  # NRRD's names for them
+    header = (f"NRRD0004\ntype: {nrrd_type}\ndimension: 3\nspace: left-posterior-superior\nsizes: {nx} {ny} {nz}\n"
               f"space directions: ({spacing[0]},0,0) (0,{spacing[1]},0) (0,0,{spacing[2]})\n"
               f"kinds: domain domain domain\nendian: little\nencoding: {encoding}\nspace origin: (0,0,0)\n"
               + (f"data file: {data_file}\n" if data_file else "") + "\n")

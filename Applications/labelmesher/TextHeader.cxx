@@ -127,18 +127,21 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     }
     std::string key = Lower(line.substr(0, std::min(separator, line.find('\0'))));
     key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c); }), key.end());
-    const std::string rest = line.substr(line.find_first_not_of("=: \t", separator) == std::string::npos
-        ? line.size()
-        : line.find_first_not_of("=: \t", separator));
-    const std::string value = Trimmed(key == "elementdatafile" ? rest : rest.substr(0, rest.find('\0')));
+    const std::size_t start = line.find_first_not_of("=: \t", separator);
+    std::string value = start == std::string::npos ? std::string() : line.substr(start);
+    if (key != "elementdatafile")
+    {
+      value = value.substr(0, value.find('\0')); // a data file name keeps its NULs, to be refused
+    }
+    value = Trimmed(value);
     // MetaIO's booleans: true when the value starts with T, t or 1.
     const bool yes = !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
     if (key == "ndims")
     {
       std::istringstream field(value);
       long long dims = 0;
-      std::string rest;
-      if (!(field >> dims) || (field >> rest) || dims < 1 || dims > 8)
+      std::string extra;
+      if (!(field >> dims) || (field >> extra) || dims < 1 || dims > 8)
       {
         throw InputError("'" + path + "' is not a valid MetaImage file (header line " + std::to_string(number) +
           ": NDims must be 1 to 8)");
@@ -168,12 +171,12 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
       header.RawData = !header.Compressed;
       header.Detached = Lower(value) != "local";
       header.DataFile = DataFileNamed(DataFileName(value, path, "MetaImage"), path);
-      // LIST or a file-name pattern: MetaIO parses the pattern's numbers unchecked (a fuzzed one
-      // made it allocate without bound), and real label images come in one file.
       if (value.empty())
       {
         throw InputError("'" + path + "' is not a valid MetaImage file (ElementDataFile names no file)");
       }
+      // LIST or a file-name pattern: MetaIO parses the pattern's numbers unchecked (a fuzzed one
+      // made it allocate without bound), and real label images come in one file.
       if (header.Detached && header.DataFile.empty())
       {
         throw InputError("'" + path + "' spreads its voxels over several data files (ElementDataFile LIST or a "

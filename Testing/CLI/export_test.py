@@ -299,12 +299,13 @@ def case_plain_errors():
                          cli.path("m.vtu")), "asks for a preset zlib dictionary")
     assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage/text_voxels_1d.mha"), "-o",
                          cli.path("m.vtu")), "stores its voxels as text")
-    # And three more, each aborting ITK in the sanitizer build or never returning: data file names
-    # that are a pattern or hold control characters, and a pattern after an NDims of -3 whose field
+    # And four more, each aborting ITK in the sanitizer build or never returning: data file names
+    # that are a pattern, empty or hold control characters, and a pattern after an NDims of -3 whose field
     # name ends in a NUL (MetaIO's C-string compare still reads it as NDims).
     for name, fragment in (("data_file_pattern.mha", "several data files"),
                            ("pattern_and_nul_in_ndims.mha", "several data files"),
-                           ("binary_data_file_name.mha", "data file name holds control characters")):
+                           ("binary_data_file_name.mha", "data file name holds control characters"),
+                           ("empty_data_file_name.mha", "ElementDataFile names no file")):
         assert_plain(cli.run("mesh", os.path.join(REGRESSIONS, "read_metaimage", name), "-o", cli.path("m.vtu")),
                      fragment)
     # MetaImage fields as MetaIO reads them: a name ending at a NUL or a ':', a boolean that is 1.

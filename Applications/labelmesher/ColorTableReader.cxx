@@ -3,6 +3,7 @@
 #include "ColorTableReader.h"
 
 #include "ImageReader.h"
+#include "StringUtilities.h"
 
 #include <array>
 #include <cerrno>
@@ -21,13 +22,6 @@ namespace
 {
 
 constexpr long long MaxLabel = 2147483647; // 2^31 - 1
-
-std::string Trim(const std::string& text)
-{
-  const auto first = text.find_first_not_of(" \t\r\n");
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
 
 std::vector<std::string> Words(const std::string& text)
 {

@@ -66,13 +66,6 @@ bool Lookup(const itk::MetaDataDictionary& dictionary, const std::string& key, s
   return dictionary.HasKey(key) && itk::ExposeMetaData<std::string>(dictionary, key, value);
 }
 
-std::string Trim(const std::string& text)
-{
-  const auto first = text.find_first_not_of(" \t\r\n");
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
-
 /// The whole of `text` (blanks around allowed) as an integer in [low, high].
 bool ParseInteger(const std::string& text, std::int64_t low, std::int64_t high, std::int64_t& value)
 {

@@ -21,6 +21,14 @@ inline bool EndsWith(const std::string& text, const std::string& suffix)
     text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+/// `text` without the blanks (spaces, tabs, line ends) around it.
+inline std::string Trim(const std::string& text)
+{
+  const auto first = text.find_first_not_of(" \t\r\n");
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
 /// ASCII lower case.
 inline std::string Lower(std::string text)
 {

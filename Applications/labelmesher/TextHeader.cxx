@@ -19,12 +19,6 @@ namespace detail
 namespace
 {
 
-std::string Trimmed(const std::string& text)
-{
-  const std::size_t first = text.find_first_not_of(" \t");
-  return first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 /// One line of the header without its line ending (headers written on Windows end in "\r\n").
 bool NextLine(std::istream& in, std::string& line)
 {
@@ -99,7 +93,7 @@ void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& heade
     else if (lower.rfind("data file:", 0) == 0 || lower.rfind("datafile:", 0) == 0)
     {
       header.Detached = true; // the voxels are never in the header's file, whatever the name
-      header.DataFile = DataFileNamed(DataFileName(Trimmed(line.substr(line.find(':') + 1)), path, "NRRD"), path);
+      header.DataFile = DataFileNamed(DataFileName(Trim(line.substr(line.find(':') + 1)), path, "NRRD"), path);
     }
   }
 }
@@ -133,7 +127,7 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     {
       value = value.substr(0, value.find('\0')); // a data file name keeps its NULs, to be refused
     }
-    value = Trimmed(value);
+    value = Trim(value);
     // MetaIO's booleans: true when the value starts with T, t or 1.
     const bool yes = !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
     if (key == "ndims")

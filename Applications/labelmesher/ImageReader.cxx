@@ -187,6 +187,7 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
         " dimensions: expected a 2D or 3D label image");
     }
   }
+  detail::CheckMetaImageReadAlike(path, io, header); // before the checks that rely on `header`
   CheckNotTruncated(path, io, header);
   detail::CheckCompressedVoxels(path, io, header);
 

@@ -4,6 +4,9 @@
 #include "ImageReader.h"
 #include "StringUtilities.h"
 
+#include "itkMetaImageIO.h"
+#include "metaImage.h"
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -32,6 +35,16 @@ bool NextLine(std::istream& in, std::string& line)
   }
   return true;
 }
+
+/// MetaIO keeps the CompressedDataSize it read protected, with no getter; a derived class may name
+/// the member.
+struct MetaImageFields : MetaImage
+{
+  static std::streamoff CompressedDataSize(const MetaImage& image)
+  {
+    return image.*(&MetaImageFields::m_CompressedDataSize);
+  }
+};
 
 /// The data file a header names, relative to the header's folder; empty for the multi-file forms
 /// (LIST, a pattern with its range) and for LOCAL.
@@ -117,7 +130,14 @@ void ReadMetaImageFields(std::istream& in, const std::string& path, TextHeader& 
     const std::size_t separator = line.find_first_of("=:");
     if (separator == std::string::npos)
     {
-      continue;
+      // MetaIO looks for the value of a line without a separator lines further on, so a garbled
+      // line makes it read fields we never see (a fuzzed one hid `CompressedData = False`).
+      if (std::all_of(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); }))
+      {
+        continue;
+      }
+      throw InputError("'" + path + "' is not a valid MetaImage file (header line " + std::to_string(number) +
+        " is not 'Name = Value')");
     }
     std::string key = Lower(line.substr(0, std::min(separator, line.find('\0'))));
     key.erase(std::remove_if(key.begin(), key.end(), [](unsigned char c) { return std::isspace(c); }), key.end());
@@ -356,6 +376,39 @@ void CheckCompressedVoxels(const std::string& path, itk::ImageIOBase* io, const 
       << (status == Z_STREAM_END ? " inflates to " : " ends after ") << produced;
   }
   throw InputError(s.str());
+}
+
+void CheckMetaImageReadAlike(const std::string& path, itk::ImageIOBase* io, const TextHeader& header)
+{
+  auto* metaIO = dynamic_cast<itk::MetaImageIO*>(io);
+  if (header.Kind != TextHeader::Format::MetaImage || !metaIO)
+  {
+    return;
+  }
+  const MetaImage& image = *metaIO->GetMetaImagePointer();
+  const std::streamoff bytes = MetaImageFields::CompressedDataSize(image);
+  // ReadTextHeader keeps a size that is not positive as 0 (CheckCompressedVoxels refuses it).
+  const bool compressedAlike = image.CompressedData() == header.Compressed &&
+    (!header.Compressed || (bytes > 0 ? static_cast<std::uintmax_t>(bytes) : 0) == header.CompressedBytes);
+  const std::string dataFile = Trim(image.ElementDataFileName());
+  const bool dataFileAlike = Lower(dataFile) == "local" ? !header.Detached
+                                                         : header.Detached && !header.DataFile.empty() &&
+      DataFileNamed(dataFile, path) == header.DataFile;
+  const char* differing = image.CompressedData() != header.Compressed ? "CompressedData"
+    : !compressedAlike                                                ? "CompressedDataSize"
+    : !image.BinaryData()                                             ? "BinaryData"
+    : !dataFileAlike                                                  ? "ElementDataFile"
+                                                                      : nullptr;
+  if (differing)
+  {
+    throw InputError("'" + path + "' is not a valid MetaImage file (its header is garbled: MetaIO does not read its " +
+      differing + " as written)");
+  }
+  if (header.Compressed && image.HeaderSize() != 0)
+  {
+    throw InputError("'" + path + "' has compressed voxels after a HeaderSize, which labelmesher does not read: "
+      "write them without HeaderSize");
+  }
 }
 
 } // namespace detail

@@ -41,8 +41,8 @@ struct TextHeader
 };
 
 /// Reads the header of `path` once. Throws InputError for a NRRD field line longer than NrrdIO's
-/// error buffer, a MetaImage NDims outside 1 to 8 or MetaImage voxels stored as text; a file of
-/// another format gives Kind Other.
+/// error buffer, a MetaImage line that is not "Name = Value", a MetaImage NDims outside 1 to 8 or
+/// MetaImage voxels stored as text; a file of another format gives Kind Other.
 TextHeader ReadTextHeader(const std::string& path);
 
 /// A detached header's data file must be a regular file: NrrdIO's message for a missing one calls
@@ -59,6 +59,13 @@ void CheckNotTruncated(const std::string& path, itk::ImageIOBase* io, const Text
 /// that asks for a preset dictionary and leaks on a broken one (both found by fuzzing the
 /// MetaImage reader); without a CompressedDataSize it returns uninitialised memory as voxels.
 void CheckCompressedVoxels(const std::string& path, itk::ImageIOBase* io, const TextHeader& header);
+
+/// MetaIO must have read the fields the checks above take from `header` as ReadTextHeader did
+/// (CompressedData, CompressedDataSize, BinaryData, ElementDataFile): where a garbled header makes
+/// the two readings differ, those checks would vouch for voxels MetaIO reads otherwise (a fuzzed
+/// header made it read compressed voxels of unknown size). Compressed voxels with a HeaderSize are
+/// refused, since they do not start where CheckCompressedVoxels inflates them.
+void CheckMetaImageReadAlike(const std::string& path, itk::ImageIOBase* io, const TextHeader& header);
 
 } // namespace detail
 } // namespace labelmesher_cli

@@ -292,6 +292,20 @@ def case_compressed_metaimage():
         with open(path(name), "wb") as f:
             f.write(text.encode() + data)
         expect_failure(run("mesh", path(name), "-o", path("out.vtu")), message)
+    # Fields that MetaIO reads otherwise than the checks above (it matches names exactly; they
+    # ignore case and spaces, to refuse more): without the check, the first two are meshed from
+    # uninitialised memory with exit 0; so is compressed data placed by a HeaderSize.
+    garbled = {"garbled_compressed.mha": (raw.replace("CompressedData = False", "CompressedData = True\n"
+                                                       "Compressed Data = False"), labels.tobytes(),
+                                           "does not read its CompressedData as written"),
+               "garbled_size.mha": (header.replace("ElementType", "compressed datasize = 99\nElementType"), body,
+                                    "does not read its CompressedDataSize as written"),
+               "header_size.mha": (header.replace("ElementType", "HeaderSize = -1\nElementType"), body,
+                                   "compressed voxels after a HeaderSize")}
+    for name, (text, data, message) in garbled.items():
+        with open(path(name), "wb") as f:
+            f.write(text.encode() + data)
+        expect_failure(run("mesh", path(name), "-o", path("out.vtu")), message)
     # Voxels stored as text are refused: ITK 5.2 frees memory it does not own on 1D and 2D ones.
     text = raw.replace("BinaryData = True", "BinaryData = False")
     with open(path("text.mha"), "wb") as f:

@@ -9,6 +9,7 @@
 #include "SegmentationReader.h"
 #include "StringUtilities.h"
 #include "TextHeader.h"
+#include "VtiCheck.h"
 #include "VTKMessages.h"
 
 #include "itkImage.h"
@@ -304,6 +305,7 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
   {
     if (EndsWith(lower, ".vti"))
     {
+      CheckVtiCompressionHeaders(path);
       vtkSmartPointer<vtkImageData> image = ReadWithVTK<vtkXMLImageDataReader>(path);
       CheckVTILabels(image, path);
       return image;

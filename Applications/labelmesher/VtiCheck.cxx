@@ -182,7 +182,7 @@ private:
       long long count = 0;
       tuples = array->GetScalarAttribute("NumberOfTuples", count) && count > 0 ? static_cast<std::uint64_t>(count) : 0;
     }
-    else
+    else if (kind == "PointData" || kind == "CellData")
     {
       tuples = TuplesOfExtent(piece, kind == "CellData");
     }
@@ -204,7 +204,8 @@ private:
     {
       std::ostringstream s;
       s << "announces " << static_cast<long double>(announced) << " bytes in " << header.Blocks
-        << " blocks; its " << tuples << " tuples of " << components << " need " << static_cast<long double>(needed);
+        << " blocks; its " << tuples << " tuples of " << components << " components of " << wordBytes << " bytes are "
+        << static_cast<long double>(needed);
       this->Refuse(array, s.str());
     }
   }

@@ -388,14 +388,13 @@ void CheckMetaImageReadAlike(const std::string& path, itk::ImageIOBase* io, cons
   const MetaImage& image = *metaIO->GetMetaImagePointer();
   const std::streamoff bytes = MetaImageFields::CompressedDataSize(image);
   // ReadTextHeader keeps a size that is not positive as 0 (CheckCompressedVoxels refuses it).
-  const bool compressedAlike = image.CompressedData() == header.Compressed &&
-    (!header.Compressed || (bytes > 0 ? static_cast<std::uintmax_t>(bytes) : 0) == header.CompressedBytes);
+  const bool sizeAlike = (bytes > 0 ? static_cast<std::uintmax_t>(bytes) : 0) == header.CompressedBytes;
   const std::string dataFile = Trim(image.ElementDataFileName());
   const bool dataFileAlike = Lower(dataFile) == "local" ? !header.Detached
                                                          : header.Detached && !header.DataFile.empty() &&
       DataFileNamed(dataFile, path) == header.DataFile;
   const char* differing = image.CompressedData() != header.Compressed ? "CompressedData"
-    : !compressedAlike                                                ? "CompressedDataSize"
+    : header.Compressed && !sizeAlike                                 ? "CompressedDataSize"
     : !image.BinaryData()                                             ? "BinaryData"
     : !dataFileAlike                                                  ? "ElementDataFile"
                                                                       : nullptr;

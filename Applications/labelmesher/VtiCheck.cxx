@@ -101,6 +101,18 @@ std::uint64_t TuplesOfExtent(vtkXMLDataElement* piece, bool cells)
   return tuples;
 }
 
+/// An array's tuples: its NumberOfTuples in field data, its piece's points or cells otherwise;
+/// 0 when not known.
+std::uint64_t TuplesOf(vtkXMLDataElement* array, vtkXMLDataElement* piece, const std::string& kind)
+{
+  if (kind == "FieldData")
+  {
+    long long count = 0;
+    return array->GetScalarAttribute("NumberOfTuples", count) && count > 0 ? static_cast<std::uint64_t>(count) : 0;
+  }
+  return kind == "PointData" || kind == "CellData" ? TuplesOfExtent(piece, kind == "CellData") : 0;
+}
+
 class HeaderChecker
 {
 public:
@@ -176,16 +188,7 @@ private:
     int wordType = 0;
     int components = 1;
     array->GetScalarAttribute("NumberOfComponents", components);
-    std::uint64_t tuples = 0;
-    if (kind == "FieldData")
-    {
-      long long count = 0;
-      tuples = array->GetScalarAttribute("NumberOfTuples", count) && count > 0 ? static_cast<std::uint64_t>(count) : 0;
-    }
-    else if (kind == "PointData" || kind == "CellData")
-    {
-      tuples = TuplesOfExtent(piece, kind == "CellData");
-    }
+    const std::uint64_t tuples = TuplesOf(array, piece, kind);
     if (!array->GetWordTypeAttribute("type", wordType) || components < 1 || tuples == 0)
     {
       return; // the block count alone is checked; VTK's reader judges the rest

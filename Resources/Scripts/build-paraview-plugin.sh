@@ -3,14 +3,19 @@
 # Builds the LabelMesher ParaView plugin in ./build-paraview against ParaView
 # 5.11's own VTK. Debian's paraview-dev cannot be installed beside libvtk9-dev
 # (python3-paraview conflicts with python3-vtk9), so ParaView's packages are
-# downloaded and unpacked into build-paraview/prefix (no root needed for that);
+# downloaded and unpacked into a private prefix (no root needed for that);
 # the few -dev packages ParaView's CMake config looks for are installed
 # normally. Result: build-paraview/build/lib/paraview-5.11/plugins/LabelMesher/LabelMesher.so
 # and the ctest tests of Plugins/ParaView/Testing (label paraview).
+# The unpacked packages are kept outside the clone, in
+# ${XDG_CACHE_HOME:-~/.cache}/labelmesher/paraview-<version>, so that another clone on the same
+# machine neither downloads nor unpacks them again; the build is configured once (later runs only
+# rebuild what changed; arguments given to this script configure it again) and compiles through
+# ccache.
 set -euo pipefail
-cd "$(dirname "$0")/../.."
+here="$(cd "$(dirname "$0")" && pwd)"
+cd "$here/../.."
 root="$PWD/build-paraview"
-prefix="$root/prefix"
 
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
@@ -31,13 +36,24 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get install -y --no-install-recommends "${missing[@]}"
 fi
 
+version=$(apt-cache policy paraview 2>/dev/null | sed -n 's/^ *Candidate: *//p')
+if [ -z "$version" ] || [ "$version" = "(none)" ]; then
+  $sudo apt-get update
+  version=$(apt-cache policy paraview | sed -n 's/^ *Candidate: *//p')
+fi
+prefix="${XDG_CACHE_HOME:-$HOME/.cache}/labelmesher/paraview-${version//[^A-Za-z0-9.+-]/_}"
 if [ ! -x "$prefix/usr/bin/pvbatch" ]; then
-  mkdir -p "$root/debs"
-  (cd "$root/debs" && { apt-get download paraview paraview-dev python3-paraview 2>/dev/null ||
-    { $sudo apt-get update && apt-get download paraview paraview-dev python3-paraview; }; })
-  for deb in "$root"/debs/*.deb; do
-    dpkg-deb -x "$deb" "$prefix"
+  # Unpacked beside the final place and renamed when complete: an interrupted run leaves no
+  # half-unpacked prefix behind that a later run would take for a whole one.
+  partial="$prefix.partial"
+  rm -rf "$partial"
+  mkdir -p "$partial/debs"
+  (cd "$partial/debs" && apt-get download paraview paraview-dev python3-paraview)
+  for deb in "$partial"/debs/*.deb; do
+    dpkg-deb -x "$deb" "$partial"
   done
+  rm -rf "$partial/debs"
+  mv "$partial" "$prefix"
 fi
 # ParaView's own runtime libraries come with the VTK/Qt set; say so plainly if one is missing.
 if ldd "$prefix/usr/bin/pvbatch" | grep -q "not found"; then
@@ -46,8 +62,12 @@ if ldd "$prefix/usr/bin/pvbatch" | grep -q "not found"; then
   exit 1
 fi
 
-cmake -S Plugins/ParaView -B "$root/build" -G Ninja \
-  -DParaView_DIR="$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11" \
-  -DPVBATCH="$prefix/usr/bin/pvbatch" \
-  -DPARAVIEW_PYTHONPATH="$prefix/usr/lib/python3/dist-packages" "$@"
+source "$here/ccache.sh"
+if [ ! -f "$root/build/CMakeCache.txt" ] || [ $# -gt 0 ] ||
+   ! grep -q "^PVBATCH:FILEPATH=$prefix/usr/bin/pvbatch\$" "$root/build/CMakeCache.txt"; then
+  cmake -S Plugins/ParaView -B "$root/build" -G Ninja \
+    -DParaView_DIR="$prefix/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11" \
+    -DPVBATCH="$prefix/usr/bin/pvbatch" \
+    -DPARAVIEW_PYTHONPATH="$prefix/usr/lib/python3/dist-packages" "${labelmesher_ccache[@]}" "$@"
+fi
 cmake --build "$root/build" -j "${LABELMESHER_JOBS:-2}"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Builds LabelMesher with AddressSanitizer (LeakSanitizer on) and UndefinedBehaviorSanitizer in
-# ./build-sanitize (GCC; no benchmarks, no Python wrapping, no Qt) and runs the unit and CLI
+# ./build-sanitize (GCC; only the programs its tests run: no benchmarks, no Python wrapping, no
+# Qt, no examples) and runs the unit and CLI
 # tests there, and every PROPERTY_STRIDE-th property test (default 4: about a quarter of the
 # random images). Every report goes to a file under build-sanitize/reports; the script fails
 # when a test fails or when any report was written, even by a program whose failure a test
@@ -13,10 +14,17 @@ cd "$here/../.."
 stride="${1:-4}"
 build=build-sanitize
 
+source "$here/ccache.sh"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DLABELMESHER_SANITIZE=address,undefined -DLABELMESHER_BUILD_BENCHMARKS=OFF \
-  -DLABELMESHER_WRAP_PYTHON=OFF -DLABELMESHER_BUILD_GUI=OFF
-cmake --build "$build" -j "${LABELMESHER_JOBS:-2}"
+  -DLABELMESHER_WRAP_PYTHON=OFF -DLABELMESHER_BUILD_GUI=OFF "${labelmesher_ccache[@]}"
+# Only what the unit, CLI and property tests run: the C++ test programs, the CLI and the scan
+# (not the example program, whose tests this script does not run).
+targets=(labelmesher labelmesher_property_scan)
+for source in Testing/Cxx/Test*.cxx; do
+  targets+=("$(basename "$source" .cxx)")
+done
+cmake --build "$build" -j "${LABELMESHER_JOBS:-2}" --target "${targets[@]}"
 
 reports="$PWD/$build/reports"
 rm -rf "$reports"

@@ -29,9 +29,17 @@ endfunction()
 set(standin ${WORK}/standin)
 set(extension ${WORK}/extension)
 set(installed ${WORK}/install)
-file(REMOVE_RECURSE ${installed})
+# A fresh install, and nothing left from an earlier run outside the two build folders.
+file(GLOB leftovers LIST_DIRECTORIES true ${WORK}/*)
+list(REMOVE_ITEM leftovers ${standin} ${extension})
+if(leftovers)
+  file(REMOVE_RECURSE ${leftovers})
+endif()
 run("configuring the stand-in Slicer" ${CMAKE_COMMAND} -S ${SOURCE}/Testing/Slicer/StandIn -B ${standin}
   -G Ninja -DPython3_EXECUTABLE=${PYTHON})
+# What the test imports is made anew each run (a file kept from an earlier build must not hide a
+# rule that no longer makes it); the libraries are only relinked.
+file(REMOVE_RECURSE ${extension}/lib/Slicer-5.8/qt-scripted-modules)
 # The inner build, as the superbuild would configure it once p4est and Eigen exist; here they are
 # Debian's (no network for the superbuild's downloads).
 run("configuring the extension" ${CMAKE_COMMAND} -S ${SOURCE}/SlicerModule -B ${extension} -G Ninja

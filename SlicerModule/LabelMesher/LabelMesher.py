@@ -142,19 +142,24 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
             slicer.app.processEvents()  # keeps the GUI (and the Cancel button) alive
 
         try:
-            p = self._parameterNode
-            report = self.logic.process(
-                p.inputSegmentation, self.checkedSegmentIds(), p.inputLabelmap, p.outputModel,
-                MeshingParameters(image_to_mesh_distance=p.imageToMeshDistance,
-                                  mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
-                                  minimum_angle=p.minimumAngle, include_background=p.includeBackground,
-                                  curve=p.curve, smoothness=p.smoothness, tension=p.tension),
-                progress, lambda: self._cancelRequested)
-            self.ui.summaryText.plainText = summary_text(report)
-        except MeshingCancelled:
-            self.ui.summaryText.plainText = "Cancelled: no mesh was made."
-        except MeshingError as e:
-            slicer.util.errorDisplay(f"LabelMesher: {e}")
+            # Expected failures are one plain line; anything else (a bug, a Slicer API change) gets
+            # Slicer's error dialog with the traceback as details, as the module template does,
+            # instead of going only to the Python console. tryWithErrorDisplay re-raises after it.
+            with slicer.util.tryWithErrorDisplay("LabelMesher failed unexpectedly; no mesh was made."):
+                try:
+                    p = self._parameterNode
+                    report = self.logic.process(
+                        p.inputSegmentation, self.checkedSegmentIds(), p.inputLabelmap, p.outputModel,
+                        MeshingParameters(image_to_mesh_distance=p.imageToMeshDistance,
+                                          mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
+                                          minimum_angle=p.minimumAngle, include_background=p.includeBackground,
+                                          curve=p.curve, smoothness=p.smoothness, tension=p.tension),
+                        progress, lambda: self._cancelRequested)
+                    self.ui.summaryText.plainText = summary_text(report)
+                except MeshingCancelled:
+                    self.ui.summaryText.plainText = "Cancelled: no mesh was made."
+                except MeshingError as e:
+                    slicer.util.errorDisplay(f"LabelMesher: {e}")
         finally:
             self._running = False
             self.ui.applyButton.text = "Apply"
@@ -170,6 +175,7 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
         """(labels [k, j, i], IJK to RAS, materials): segment i of segmentIds gets label i + 1."""
         if not segmentIds:
             raise MeshingError("no segment is chosen")
+        colorNodesBefore = {node.GetID() for node in slicer.util.getNodesByClass("vtkMRMLColorNode")}
         labelmap = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLLabelMapVolumeNode")
         try:
             ids = vtk.vtkStringArray()
@@ -178,12 +184,25 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
             slicer.modules.segmentations.logic().ExportSegmentsToLabelmapNode(segmentationNode, ids, labelmap)
             labels, matrix = self.labelArrayFromVolume(labelmap)
         finally:
-            slicer.mrmlScene.RemoveNode(labelmap)
+            self.removeTemporaryLabelmap(labelmap, colorNodesBefore)
         segmentation = segmentationNode.GetSegmentation()
         materials = [Material(index + 1, segmentation.GetSegment(segmentId).GetName(),
                               tuple(segmentation.GetSegment(segmentId).GetColor()))
                      for index, segmentId in enumerate(segmentIds)]
         return labels, matrix, materials
+
+    def removeTemporaryLabelmap(self, labelmap, colorNodesBefore):
+        """Removes the export's labelmap with the nodes the export made for it: its display node and
+        the `<labelmap>_ColorTable` ExportSegmentsToLabelmapNode adds to the scene
+        (vtkSlicerSegmentationsModuleLogic.cxx); colour nodes that existed before are shared and stay."""
+        display = labelmap.GetDisplayNode()
+        color = display.GetColorNode() if display else None
+        made = [labelmap, display]
+        if color and color.GetID() not in colorNodesBefore:
+            made.append(color)
+        for node in made:
+            if node and slicer.mrmlScene.IsNodePresent(node):
+                slicer.mrmlScene.RemoveNode(node)
 
     def labelArrayFromVolume(self, volumeNode):
         matrix = vtk.vtkMatrix4x4()
@@ -207,7 +226,9 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
         outputModel.SetAndObserveMesh(result.mesh)
         outputModel.CreateDefaultDisplayNodes()
         display = outputModel.GetDisplayNode()
-        display.SetActiveScalarName("Material")
+        # "Material" is cell data; SetActiveScalarName alone keeps the location at point data, and a
+        # model that already has a display node would then not be coloured.
+        display.SetActiveScalar("Material", vtk.vtkAssignAttribute.CELL_DATA)
         display.SetScalarVisibility(True)
         display.SetAndObserveColorNodeID(self.materialColorNode(materials, display.GetColorNode()).GetID())
         display.SetScalarRangeFlag(slicer.vtkMRMLDisplayNode.UseColorNodeScalarRange)
@@ -232,7 +253,12 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
             node = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLColorTableNode", "LabelMesher materials")
         node.SetTypeToUser()
         node.SetNumberOfColors(0)  # drop the previous run's entries before refilling
-        node.SetNumberOfColors(max([m.label for m in materials] + [0]) + 1)
+        count = max([m.label for m in materials] + [0]) + 1
+        node.SetNumberOfColors(count)
+        # A new table's range is 0..255 (vtkMRMLColorTableNode.cxx); with UseColorNodeScalarRange labels
+        # 1..N would all map to entry 0, the transparent background. Entry i must be label i, as
+        # vtkSlicerSegmentationsModuleLogic.cxx sets it for exported labelmaps.
+        node.GetLookupTable().SetRange(0, count - 1)
         node.SetColor(0, "background", 0.0, 0.0, 0.0, 0.0)
         for m in materials:
             r, g, b = m.color if m.color is not None else (0.5, 0.5, 0.5)

@@ -2,9 +2,8 @@
 // Refines and balances the p4est forest until every leaf passes the refinement criteria (Algorithm 2).
 #include "Octree/OctreeRefinement.h"
 
-#include <mpi.h>
 #include <p4est_base.h>
-#include <sc.h>
+#include <sc.h> // includes mpi.h when libsc was built with MPI (SC_ENABLE_MPI)
 
 #include <algorithm>
 #include <cstdlib>
@@ -20,7 +19,9 @@ void EnsureMPIInitialized()
   // A plain process may call MPI_Init itself (a singleton start, about 0.3 s
   // once); under mpirun or pvbatch MPI is already up and is left alone.
   static std::once_flag once;
+  // A libsc built without MPI (the Slicer extension's) has MPI stubs and nothing to start.
   std::call_once(once, [] {
+#ifdef SC_ENABLE_MPI
     int initialized = 0;
     MPI_Initialized(&initialized);
     if (!initialized)
@@ -33,6 +34,7 @@ void EnsureMPIInitialized()
           MPI_Finalize();
       });
     }
+#endif
     sc_init(sc_MPI_COMM_SELF, 0, 0, nullptr, SC_LP_ERROR);
     p4est_init(nullptr, SC_LP_ERROR);
   });

@@ -7,6 +7,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
+  ccache                               # every build directory compiles through it (ccache.sh)
   libvtk9-dev python3-vtk9            # VTK 9.1 + its Python wrapping (filters, I/O, module system)
   libinsighttoolkit5-dev libgdcm-tools # ITK 5.2 image readers (NRRD, NIfTI, MetaImage); gdcm tools silence ITK's config
   libeigen3-dev

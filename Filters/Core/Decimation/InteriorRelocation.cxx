@@ -14,7 +14,9 @@ namespace labelmesher
 double InteriorRelocation::SmallestAngleAround(
   const EditableMesh& mesh, VertexId v, const Lattice& at, bool& positive) const
 {
-  double smallest = 180.0;
+  // One arccosine per position, of the largest cosine: the arccosine falls
+  // monotonically, so this is the smallest of the cells' angles.
+  double largestCosine = -1.0;
   positive = true;
   Lattice p[4];
   for (CellId c : mesh.CellsOf[v])
@@ -26,9 +28,9 @@ double InteriorRelocation::SmallestAngleAround(
       positive = false;
       return 0.0;
     }
-    smallest = std::min(smallest, QualityCheck::SmallestAngle(mesh.Dimension, p));
+    largestCosine = std::max(largestCosine, QualityCheck::LargestCosine(mesh.Dimension, p));
   }
-  return smallest;
+  return QualityCheck::AngleOfCosine(largestCosine);
 }
 
 bool InteriorRelocation::TryMove(EditableMesh& mesh, VertexId v, bool checkQuality)

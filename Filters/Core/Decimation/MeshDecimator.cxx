@@ -74,6 +74,13 @@ struct Shared
   std::vector<std::int32_t> Region; ///< per vertex
   std::vector<std::uint32_t> Stamps;
   std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
+  /// Repeated refusals (SkipRepeatedRefusals): a clock ticked by every merge
+  /// and relocation; per vertex, the tick that last changed its star, and the
+  /// clock when every merge of it was last refused by quality or topology
+  /// alone (0: not so refused).
+  std::atomic<std::uint64_t> Clock{ 1 };
+  std::vector<std::uint64_t> StarChanged;
+  std::vector<std::uint64_t> RefusedAt;
   std::atomic<std::size_t> Offered{ 0 };
   std::atomic<std::size_t> Merges{ 0 }; ///< for MaximumMerges
   std::atomic<bool> Abort{ false };
@@ -96,6 +103,7 @@ struct Worker
   std::vector<std::pair<std::int64_t, VertexId>> Targets;
   std::vector<std::uint32_t> Seen; ///< per mesh vertex: the epoch NeighboursOf saw it in
   std::uint32_t Epoch = 0;
+  std::vector<VertexId> Changed; ///< the vertices whose stars a merge changed
 };
 
 std::int64_t SquaredLength(const EditableMesh& mesh, VertexId a, VertexId b)
@@ -146,6 +154,15 @@ std::int64_t ShortestEdge(const EditableMesh& mesh, VertexId v)
   return shortest;
 }
 
+/// The stars of these vertices changed: a tick of the clock.
+template <typename Vertices>
+void MarkStarsChanged(Shared& s, const Vertices& vertices)
+{
+  const std::uint64_t now = ++s.Clock;
+  for (VertexId v : vertices)
+    s.StarChanged[v] = now;
+}
+
 /// Every vertex of a merge's cells lies in `region`: then no other region's
 /// merge can touch them.
 bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
@@ -165,6 +182,22 @@ bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
 /// Offers the queue's vertices for merging until it is empty (Algorithm 4's
 /// loop). `region` < 0: no region restriction. Vertices that only a region
 /// border kept from merging go to `held`. `tick` is called per vertex offered.
+///
+/// Repeated refusals. The quality check of a merge of a into b reads the cells
+/// around a and b's position; the topology check the cells around a and b
+/// (their labels, interface faces and links). So when every merge of a was
+/// refused by one of them, a later offer of a need not ask about b again while
+/// neither star has changed: the answer is the same. The fidelity check reads
+/// more (certificates of image faces that lean on a's neighbours' stars), so
+/// an offer with a fidelity refusal is not recorded. Stars change only by
+/// merges (the cells around the merge's vertices) and relocations (the cells
+/// around the moved vertex), which tick the clock. The cheap first steps (the
+/// orientations, the region border) still run for every target, so a is held
+/// by a border exactly as without skipping and the mesh is the same. Across
+/// regions: an offer is recorded only when a's star lies in its region, and a
+/// tick is read only past the border step (both stars in the region), so no
+/// thread reads a tick another thread may be writing, and the mesh is the same
+/// for any thread count.
 template <typename Tick>
 void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region, std::vector<VertexId>& held,
   Tick&& tick)
@@ -193,13 +226,20 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       continue;
     ++w.Counts.Offers;
     const bool interior = TopologyCheck::IsInterior(mesh, a);
-    w.Quality.Prepare(mesh, a);
     NeighboursOf(mesh, a, w, w.Neighbours);
     w.Targets.clear();
+    bool starInRegion = true;
     for (VertexId x : w.Neighbours)
+    {
       w.Targets.emplace_back(SquaredLength(mesh, a, x), x);
+      starInRegion = starInRegion && (region < 0 || s.Region[x] == region);
+    }
     std::sort(w.Targets.begin(), w.Targets.end());
-    bool merged = false, blocked = false;
+    // The clock when every merge of a was last refused, if a's star is the same since.
+    const std::uint64_t refusedAt = s.Parameters.SkipRepeatedRefusals && s.RefusedAt[a] != 0 &&
+        s.StarChanged[a] <= s.RefusedAt[a] ? s.RefusedAt[a] : 0;
+    bool merged = false, blocked = false, fidelityRefused = false;
+    w.Quality.Prepare(mesh, a);
     for (const auto& target : w.Targets)
     {
       const VertexId b = target.second;
@@ -211,6 +251,13 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       if (region >= 0 && !InRegion(s, a, b, region))
       {
         blocked = true;
+        continue;
+      }
+      // Past the two steps above, which decide whether a region border holds a
+      // back (so that a is held exactly as without skipping).
+      if (refusedAt != 0 && s.StarChanged[b] <= refusedAt)
+      {
+        ++w.Counts.SkippedRepeats;
         continue;
       }
       w.Merge.Plan(mesh, a, b);
@@ -242,9 +289,17 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       else if (checks.Fidelity && !w.Fidelity.Accepts(mesh, w.Merge))
       {
         ++w.Counts.RejectedByFidelity;
+        fidelityRefused = true;
         continue;
       }
       w.Merge.Apply(mesh);
+      // The changed stars: those of the vertices of the cells that vanished or moved.
+      w.Changed.clear();
+      for (CellId c : w.Merge.Removed)
+        w.Changed.insert(w.Changed.end(), mesh.Cells[c].begin(), mesh.Cells[c].begin() + mesh.VerticesPerCell());
+      for (const auto& cell : w.Merge.MovedCells)
+        w.Changed.insert(w.Changed.end(), cell.begin(), cell.begin() + mesh.VerticesPerCell());
+      MarkStarsChanged(s, w.Changed);
       if (checks.Fidelity && !interior)
         s.Anchors.Commit(w.Merge, w.Fidelity.Updates);
       ++w.Counts.Merges;
@@ -268,6 +323,8 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     }
     if (!merged && blocked)
       held.push_back(a);
+    if (!merged)
+      s.RefusedAt[a] = !blocked && !fidelityRefused && starInRegion ? s.Clock.load() : 0;
   }
 }
 
@@ -278,6 +335,7 @@ void Add(DecimationCounts& total, const DecimationCounts& part)
   total.RejectedByQuality += part.RejectedByQuality;
   total.RejectedByTopology += part.RejectedByTopology;
   total.RejectedByFidelity += part.RejectedByFidelity;
+  total.SkippedRepeats += part.SkippedRepeats;
 }
 
 /// Morton key of a doubled-lattice position (coordinates below 2^21).
@@ -337,9 +395,11 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   clock.Finish("decimation setup");
 
   // Regions: runs of the Morton order of the vertices.
-  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, {}, {}, {} };
+  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, { 1 }, {}, {}, {}, {}, {} };
   shared.Stamps.assign(mesh.Position.size(), 0);
   shared.Key.assign(mesh.Position.size(), 0);
+  shared.StarChanged.assign(mesh.Position.size(), 0);
+  shared.RefusedAt.assign(mesh.Position.size(), 0);
   for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
     if (!mesh.CellsOf[v].empty())
       shared.Key[v] = ShortestEdge(mesh, v);
@@ -465,6 +525,9 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
           touched[x] = 1;
           shared.Key[x] = ShortestEdge(mesh, x);
         }
+        // v's cells changed shape: the stars of v and of its neighbours.
+        scratch.Neighbours.push_back(v);
+        MarkStarsChanged(shared, scratch.Neighbours);
       }
       result.Counts.Relocations += moved;
       if (moved == 0)

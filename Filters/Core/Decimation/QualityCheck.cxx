@@ -22,10 +22,11 @@ Vec Cross(const Vec& a, const Vec& b)
 }
 double Dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-/// The largest cosine of the cell's angles: of its dihedral angles (3D,
-/// from the outward face normals: cos(dihedral at an edge) = -n_k . n_l over
-/// the two faces k, l at the edge) or planar angles (2D).
-double LargestCosine(int dimension, const Lattice* p)
+} // namespace
+
+/// Dihedral angles from the outward face normals: cos(dihedral at an edge) =
+/// -n_k . n_l over the two faces k, l at the edge.
+double QualityCheck::LargestCosine(int dimension, const Lattice* p)
 {
   double largest = -1.0;
   if (dimension == 2)
@@ -53,8 +54,6 @@ double LargestCosine(int dimension, const Lattice* p)
       largest = std::max(largest, -Dot(n[k], n[l]) / (length[k] * length[l]));
   return largest;
 }
-
-} // namespace
 
 QualityCheck::QualityCheck(int dimension, double minimumAngle)
   : Dimension(dimension)
@@ -125,7 +124,12 @@ bool QualityCheck::AnglesHold(const EditableMesh& mesh, const EdgeCollapse& merg
 
 double QualityCheck::SmallestAngle(int dimension, const Lattice* points)
 {
-  return std::acos(std::clamp(LargestCosine(dimension, points), -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+  return AngleOfCosine(LargestCosine(dimension, points));
+}
+
+double QualityCheck::AngleOfCosine(double cosine)
+{
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
 }
 
 } // namespace labelmesher

@@ -39,6 +39,11 @@ public:
 
   /// The smallest angle (degrees) of the cell with these lattice points.
   static double SmallestAngle(int dimension, const Lattice* points);
+  /// The largest cosine of the cell's angles (dihedral in 3D, planar in 2D):
+  /// the cosine of its smallest angle, without trigonometry.
+  static double LargestCosine(int dimension, const Lattice* points);
+  /// The angle (degrees) of a cosine, clamped to [-1, 1].
+  static double AngleOfCosine(double cosine);
 
 private:
   struct OppositeFace

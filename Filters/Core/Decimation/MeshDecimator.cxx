@@ -65,6 +65,18 @@ void ValidateAgainstImage(const EditableMesh& mesh, const LabelImage& image, dou
       " degrees, below the minimum angle " + std::to_string(minimumAngle) + " asked for");
 }
 
+/// How every merge of a vertex was last refused: when, and which of its
+/// targets (its neighbours, nearest first) passed the orientation test and the
+/// angle test. Valid while its star stays the same: then its targets, their
+/// order and both answers are the same.
+struct Refusal
+{
+  std::uint64_t At = 0; ///< the clock then; 0: none recorded
+  std::uint64_t PassedOrientations = 0, PassedAngles = 0; ///< bit i: target i passed
+  std::uint8_t Targets = 0;
+};
+constexpr std::size_t kMaximumRecordedTargets = 64;
+
 struct Shared
 {
   const DecimationParameters& Parameters;
@@ -75,12 +87,11 @@ struct Shared
   std::vector<std::uint32_t> Stamps;
   std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
   /// Repeated refusals (SkipRepeatedRefusals): a clock ticked by every merge
-  /// and relocation; per vertex, the tick that last changed its star, and the
-  /// clock when every merge of it was last refused by quality or topology
-  /// alone (0: not so refused).
+  /// and relocation; per vertex, the tick that last changed its star, and how
+  /// every merge of it was last refused (by quality or topology alone).
   std::atomic<std::uint64_t> Clock{ 1 };
   std::vector<std::uint64_t> StarChanged;
-  std::vector<std::uint64_t> RefusedAt;
+  std::vector<Refusal> Refusals;
   std::atomic<std::size_t> Offered{ 0 };
   std::atomic<std::size_t> Merges{ 0 }; ///< for MaximumMerges
   std::atomic<bool> Abort{ false };
@@ -184,20 +195,22 @@ bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
 /// border kept from merging go to `held`. `tick` is called per vertex offered.
 ///
 /// Repeated refusals. The quality check of a merge of a into b reads the cells
-/// around a and b's position; the topology check the cells around a and b
+/// around a and b's position (positions change only by relocation, which
+/// changes the stars around); the topology check the cells around a and b
 /// (their labels, interface faces and links). So when every merge of a was
-/// refused by one of them, a later offer of a need not ask about b again while
-/// neither star has changed: the answer is the same. The fidelity check reads
-/// more (certificates of image faces that lean on a's neighbours' stars), so
-/// an offer with a fidelity refusal is not recorded. Stars change only by
-/// merges (the cells around the merge's vertices) and relocations (the cells
-/// around the moved vertex), which tick the clock. The cheap first steps (the
-/// orientations, the region border) still run for every target, so a is held
-/// by a border exactly as without skipping and the mesh is the same. Across
-/// regions: an offer is recorded only when a's star lies in its region, and a
-/// tick is read only past the border step (both stars in the region), so no
-/// thread reads a tick another thread may be writing, and the mesh is the same
-/// for any thread count.
+/// refused by one of them, a later offer of a while a's star is the same need
+/// not ask the quality check again (Refusal keeps its answers), nor the
+/// topology check about a target b whose star is the same too. The fidelity
+/// check reads more (certificates of image faces that lean on a's neighbours'
+/// stars), so an offer with a fidelity refusal is not recorded. Stars change
+/// only by merges (the cells around the merge's vertices) and relocations (the
+/// cells around the moved vertex), which tick the clock. The region-border step
+/// runs as before for every target that passes the orientations, so a is held
+/// by a border exactly as without skipping, and the mesh, the offers and the
+/// merges are the same. Across regions: an offer is recorded only when a's star
+/// lies in its region, and b's tick is read only past the border step (both
+/// stars in the region), so no thread reads a tick another thread may be
+/// writing, and the mesh is the same for any thread count.
 template <typename Tick>
 void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region, std::vector<VertexId>& held,
   Tick&& tick)
@@ -225,6 +238,17 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     if (mesh.CellsOf[a].empty() || s.Frozen[a] || (region >= 0 && s.Region[a] != region))
       continue;
     ++w.Counts.Offers;
+    // The last refusal of every merge of a, if a's star is the same since.
+    Refusal last;
+    if (s.Parameters.SkipRepeatedRefusals && s.Refusals[a].At != 0 && s.StarChanged[a] <= s.Refusals[a].At)
+      last = s.Refusals[a];
+    if (last.At != 0 && last.PassedOrientations == 0)
+    {
+      // Every target fails the orientation test again: nothing to ask (and
+      // the record stays true).
+      w.Counts.SkippedRepeats += last.Targets;
+      continue;
+    }
     const bool interior = TopologyCheck::IsInterior(mesh, a);
     NeighboursOf(mesh, a, w, w.Neighbours);
     w.Targets.clear();
@@ -235,29 +259,33 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       starInRegion = starInRegion && (region < 0 || s.Region[x] == region);
     }
     std::sort(w.Targets.begin(), w.Targets.end());
-    // The clock when every merge of a was last refused, if a's star is the same since.
-    const std::uint64_t refusedAt = s.Parameters.SkipRepeatedRefusals && s.RefusedAt[a] != 0 &&
-        s.StarChanged[a] <= s.RefusedAt[a] ? s.RefusedAt[a] : 0;
+    Refusal now{ 0, 0, 0, static_cast<std::uint8_t>(std::min<std::size_t>(w.Targets.size(), 255)) };
     bool merged = false, blocked = false, fidelityRefused = false;
-    w.Quality.Prepare(mesh, a);
-    for (const auto& target : w.Targets)
+    if (last.At == 0)
+      w.Quality.Prepare(mesh, a);
+    for (std::size_t i = 0; i < w.Targets.size(); ++i)
     {
-      const VertexId b = target.second;
-      if (checks.Quality && !w.Quality.OrientationsHold(mesh, b))
+      const VertexId b = w.Targets[i].second;
+      const std::uint64_t bit = i < kMaximumRecordedTargets ? std::uint64_t(1) << i : 0;
+      if (last.At != 0 ? !(last.PassedOrientations & bit) : checks.Quality && !w.Quality.OrientationsHold(mesh, b))
       {
-        ++w.Counts.RejectedByQuality;
+        if (last.At != 0)
+          ++w.Counts.SkippedRepeats;
+        else
+          ++w.Counts.RejectedByQuality;
         continue;
       }
+      now.PassedOrientations |= bit;
       if (region >= 0 && !InRegion(s, a, b, region))
       {
         blocked = true;
         continue;
       }
-      // Past the two steps above, which decide whether a region border holds a
-      // back (so that a is held exactly as without skipping).
-      if (refusedAt != 0 && s.StarChanged[b] <= refusedAt)
+      if (last.At != 0 && (!(last.PassedAngles & bit) || s.StarChanged[b] <= last.At))
       {
+        // Refused by the angles or (the same two stars) by the topology check.
         ++w.Counts.SkippedRepeats;
+        now.PassedAngles |= last.PassedAngles & bit;
         continue;
       }
       w.Merge.Plan(mesh, a, b);
@@ -266,6 +294,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
         ++w.Counts.RejectedByQuality;
         continue;
       }
+      now.PassedAngles |= bit;
       if (interior)
       {
         // No interface passes through a's star: the merge moves none, so
@@ -324,7 +353,11 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     if (!merged && blocked)
       held.push_back(a);
     if (!merged)
-      s.RefusedAt[a] = !blocked && !fidelityRefused && starInRegion ? s.Clock.load() : 0;
+    {
+      const bool record = !blocked && !fidelityRefused && starInRegion && w.Targets.size() <= kMaximumRecordedTargets;
+      now.At = record ? s.Clock.load() : 0;
+      s.Refusals[a] = now;
+    }
   }
 }
 
@@ -399,7 +432,7 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   shared.Stamps.assign(mesh.Position.size(), 0);
   shared.Key.assign(mesh.Position.size(), 0);
   shared.StarChanged.assign(mesh.Position.size(), 0);
-  shared.RefusedAt.assign(mesh.Position.size(), 0);
+  shared.Refusals.assign(mesh.Position.size(), Refusal{});
   for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
     if (!mesh.CellsOf[v].empty())
       shared.Key[v] = ShortestEdge(mesh, v);

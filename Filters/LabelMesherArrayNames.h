@@ -61,8 +61,6 @@ inline constexpr char MergeOffers[] = "MergeOffers";
 inline constexpr char MergesRejectedByQuality[] = "MergesRejectedByQuality";
 inline constexpr char MergesRejectedByTopology[] = "MergesRejectedByTopology";
 inline constexpr char MergesRejectedByFidelity[] = "MergesRejectedByFidelity";
-/// merges not asked about again: refused before by quality or topology, the stars unchanged since
-inline constexpr char MergesSkippedAsRepeats[] = "MergesSkippedAsRepeats";
 inline constexpr char VerticesRelocated[] = "VerticesRelocated";
 inline constexpr char FrozenVertices[] = "FrozenVertices";
 

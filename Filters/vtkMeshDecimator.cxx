@@ -271,7 +271,6 @@ int vtkMeshDecimator::RequestData(
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByQuality, static_cast<double>(counts.RejectedByQuality));
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByTopology, static_cast<double>(counts.RejectedByTopology));
   labelmesher::AddScalarField(fd, arrays::MergesRejectedByFidelity, static_cast<double>(counts.RejectedByFidelity));
-  labelmesher::AddScalarField(fd, arrays::MergesSkippedAsRepeats, static_cast<double>(counts.SkippedRepeats));
   labelmesher::AddScalarField(fd, arrays::VerticesRelocated, static_cast<double>(counts.Relocations));
   labelmesher::AddScalarField(fd, arrays::FrozenVertices, static_cast<double>(counts.FrozenVertices));
   if (this->MeasureOutput)

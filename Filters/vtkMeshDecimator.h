@@ -46,9 +46,7 @@
  * CellsBefore, CellsAfter (kept cells), Merges, MergeOffers,
  * MergesRejectedByQuality, MergesRejectedByTopology, MergesRejectedByFidelity
  * (each merge refused counts once, under the first check that refused it; they
- * run in that order), MergesSkippedAsRepeats (merges the quality or topology
- * check refused before and that are not asked about again while the stars of
- * both vertices stay the same), VerticesRelocated, FrozenVertices; StageName / StageSeconds; and when
+ * run in that order), VerticesRelocated, FrozenVertices; StageName / StageSeconds; and when
  * MeasureOutput is on the measured MinimumAngle, MaximumAngle, InvertedCells,
  * conformity, both Hausdorff distances and the topology per material, as
  * vtkLabelOctreeMesher writes them. Output port 1, vtkPolyData: the decimated

@@ -138,7 +138,6 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
     d.RejectedByQuality = FieldCount(fd, arrays::MergesRejectedByQuality);
     d.RejectedByTopology = FieldCount(fd, arrays::MergesRejectedByTopology);
     d.RejectedByFidelity = FieldCount(fd, arrays::MergesRejectedByFidelity);
-    d.SkippedRepeats = FieldCount(fd, arrays::MergesSkippedAsRepeats);
     d.FrozenVertices = FieldCount(fd, arrays::FrozenVertices);
     d.Relocations = FieldCount(fd, arrays::VerticesRelocated);
     r.Decimation = d;
@@ -209,7 +208,7 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     out << "Decimated: " << d.CellsBefore << " -> " << d.CellsAfter << " " << cellName << " (angle bound "
         << FormatFixed(d.AngleBound, 2) << " deg; " << d.Merges << " merges, refused by quality "
         << d.RejectedByQuality << ", topology " << d.RejectedByTopology << ", fidelity " << d.RejectedByFidelity
-        << " (" << d.SkippedRepeats << " more known without asking); " << d.Relocations << " interior vertices relocated)\n";
+        << "; " << d.Relocations << " interior vertices relocated)\n";
   }
   else
   {
@@ -272,7 +271,6 @@ void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonW
   j.Key("rejected_by_quality").Integer(d.RejectedByQuality);
   j.Key("rejected_by_topology").Integer(d.RejectedByTopology);
   j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
-  j.Key("skipped_as_repeats").Integer(d.SkippedRepeats);
   j.Key("frozen_vertices").Integer(d.FrozenVertices);
   j.Key("vertices_relocated").Integer(d.Relocations);
   j.EndObject();

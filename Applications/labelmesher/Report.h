@@ -45,7 +45,6 @@ struct DecimationEntry
   double AngleBound = 0.0; ///< degrees
   long long CellsBefore = 0, CellsAfter = 0, Merges = 0, Offers = 0;
   long long RejectedByQuality = 0, RejectedByTopology = 0, RejectedByFidelity = 0, FrozenVertices = 0;
-  long long SkippedRepeats = 0; ///< refused before, both stars unchanged: not asked again
   long long Relocations = 0; ///< interior vertices moved between rounds of merges
 };
 

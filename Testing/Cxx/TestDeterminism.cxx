@@ -18,7 +18,6 @@
 #include "Decimation/MeshDecimator.h"
 #include "LabelImageFile.h"
 #include "LabelOctreeMesher.h"
-#include "RandomLabelImages.h"
 #include "Support/ParallelChunks.h"
 #include "SyntheticShapes.h"
 
@@ -266,57 +265,6 @@ TEST(Determinism, DecimatedTotalSegmentatorVolumeIsTheSameOnAnyNumberOfThreads)
 TEST(Determinism, DecimatedCassiniIsTheSameOnAnyNumberOfThreads)
 {
   ExpectDecimationDoesNotDependOnThreads(testing::MakeCassiniVolume(96), {});
-}
-
-/// Skipping merges the quality or topology check refused while neither star
-/// changed (DecimationParameters::SkipRepeatedRefusals) must give the mesh that
-/// asking every time gives, and must skip some (or this proves nothing).
-void ExpectSkippingRepeatedRefusalsChangesNothing(const LabelImage& image, const DecimationParameters& parameters)
-{
-  MesherParameters mesher;
-  mesher.ImageToMeshDistance = parameters.ImageToMeshDistance;
-  mesher.MeshToImageDistance = parameters.MeshToImageDistance;
-  const SimplexMesh initial = MeshLabelImage(image, mesher).Mesh;
-  DecimationParameters asking = parameters;
-  asking.SkipRepeatedRefusals = false;
-  const DecimationResult reference = DecimateMesh(image, initial, asking);
-  const DecimationResult result = DecimateMesh(image, initial, parameters);
-  EXPECT_EQ(reference.Counts.SkippedRepeats, 0u);
-  EXPECT_GT(result.Counts.SkippedRepeats, 0u) << "nothing was skipped";
-  EXPECT_EQ(result.Mesh.Points, reference.Mesh.Points);
-  EXPECT_EQ(result.Mesh.Connectivity, reference.Mesh.Connectivity);
-  EXPECT_EQ(result.Mesh.Materials, reference.Mesh.Materials);
-  EXPECT_EQ(result.Counts.Offers, reference.Counts.Offers);
-  EXPECT_EQ(result.Counts.Merges, reference.Counts.Merges);
-  EXPECT_EQ(result.Counts.Relocations, reference.Counts.Relocations);
-  // What is skipped is what would have been refused again.
-  EXPECT_EQ(result.Counts.RejectedByQuality + result.Counts.RejectedByTopology + result.Counts.SkippedRepeats,
-    reference.Counts.RejectedByQuality + reference.Counts.RejectedByTopology);
-}
-
-TEST(Determinism, SkippingRepeatedRefusalsGivesTheSameMeshOnRandomImages)
-{
-  // Smooth random shapes in 2D and 3D, with the bounds and angles the
-  // property tests draw from.
-  const double angles[] = { 5.0, 15.0, 19.47 };
-  for (std::uint64_t seed = 0; seed < 24; ++seed)
-  {
-    const int dimension = seed % 2 ? 3 : 2;
-    DecimationParameters parameters;
-    parameters.MinimumAngle = angles[seed % 3];
-    parameters.ImageToMeshDistance = static_cast<double>(seed % 4);
-    parameters.MeshToImageDistance = static_cast<double>((seed / 4) % 4);
-    SCOPED_TRACE("seed " + std::to_string(seed));
-    ExpectSkippingRepeatedRefusalsChangesNothing(testing::GenerateRandomLabelImage(9100 + seed, dimension), parameters);
-  }
-}
-
-TEST(Determinism, SkippingRepeatedRefusalsGivesTheSameMeshAcrossRegions)
-{
-  // Large enough to be cut into regions decimated on two threads at once.
-  ThreadLimitGuard guard;
-  SetThreadLimit(2);
-  ExpectSkippingRepeatedRefusalsChangesNothing(testing::MakeCassiniVolume(96), {});
 }
 
 } // namespace

@@ -53,11 +53,6 @@ struct DecimationParameters
     bool Fidelity = true;
     bool Topology = true;
   } Checks;
-  /// Do not ask again about a merge the quality or topology check refused
-  /// while neither of its two vertices' stars has changed since: those checks
-  /// read nothing else, so the answer would be the same (MeshDecimator.cxx).
-  /// For tests only, off asks every time; the mesh must not change.
-  bool SkipRepeatedRefusals = true;
 };
 
 struct DecimationCounts
@@ -69,9 +64,6 @@ struct DecimationCounts
   /// Merges tried and refused, by the first check that refused them (checks
   /// run in this order: quality, topology, fidelity).
   std::size_t RejectedByQuality = 0, RejectedByTopology = 0, RejectedByFidelity = 0;
-  /// Merges not asked about again: refused before by the quality or topology
-  /// check, and neither vertex's star has changed since.
-  std::size_t SkippedRepeats = 0;
   std::size_t Relocations = 0;    ///< interior vertices moved (InteriorRelocation.h), counted per move
   std::size_t FrozenVertices = 0; ///< vertices that may not move (image faces no single star certifies)
 };

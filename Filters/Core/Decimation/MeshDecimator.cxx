@@ -65,18 +65,6 @@ void ValidateAgainstImage(const EditableMesh& mesh, const LabelImage& image, dou
       " degrees, below the minimum angle " + std::to_string(minimumAngle) + " asked for");
 }
 
-/// How every merge of a vertex was last refused: when, and which of its
-/// targets (its neighbours, nearest first) passed the orientation test and the
-/// angle test. Valid while its star stays the same: then its targets, their
-/// order and both answers are the same.
-struct Refusal
-{
-  std::uint64_t At = 0; ///< the clock then; 0: none recorded
-  std::uint64_t PassedOrientations = 0, PassedAngles = 0; ///< bit i: target i passed
-  std::uint8_t Targets = 0;
-};
-constexpr std::size_t kMaximumRecordedTargets = 64;
-
 struct Shared
 {
   const DecimationParameters& Parameters;
@@ -86,12 +74,6 @@ struct Shared
   std::vector<std::int32_t> Region; ///< per vertex
   std::vector<std::uint32_t> Stamps;
   std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
-  /// Repeated refusals (SkipRepeatedRefusals): a clock ticked by every merge
-  /// and relocation; per vertex, the tick that last changed its star, and how
-  /// every merge of it was last refused (by quality or topology alone).
-  std::atomic<std::uint64_t> Clock{ 1 };
-  std::vector<std::uint64_t> StarChanged;
-  std::vector<Refusal> Refusals;
   std::atomic<std::size_t> Offered{ 0 };
   std::atomic<std::size_t> Merges{ 0 }; ///< for MaximumMerges
   std::atomic<bool> Abort{ false };
@@ -114,7 +96,6 @@ struct Worker
   std::vector<std::pair<std::int64_t, VertexId>> Targets;
   std::vector<std::uint32_t> Seen; ///< per mesh vertex: the epoch NeighboursOf saw it in
   std::uint32_t Epoch = 0;
-  std::vector<VertexId> Changed; ///< the vertices whose stars a merge changed
 };
 
 std::int64_t SquaredLength(const EditableMesh& mesh, VertexId a, VertexId b)
@@ -165,15 +146,6 @@ std::int64_t ShortestEdge(const EditableMesh& mesh, VertexId v)
   return shortest;
 }
 
-/// The stars of these vertices changed: a tick of the clock.
-template <typename Vertices>
-void MarkStarsChanged(Shared& s, const Vertices& vertices)
-{
-  const std::uint64_t now = ++s.Clock;
-  for (VertexId v : vertices)
-    s.StarChanged[v] = now;
-}
-
 /// Every vertex of a merge's cells lies in `region`: then no other region's
 /// merge can touch them.
 bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
@@ -193,24 +165,6 @@ bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
 /// Offers the queue's vertices for merging until it is empty (Algorithm 4's
 /// loop). `region` < 0: no region restriction. Vertices that only a region
 /// border kept from merging go to `held`. `tick` is called per vertex offered.
-///
-/// Repeated refusals. The quality check of a merge of a into b reads the cells
-/// around a and b's position (positions change only by relocation, which
-/// changes the stars around); the topology check the cells around a and b
-/// (their labels, interface faces and links). So when every merge of a was
-/// refused by one of them, a later offer of a while a's star is the same need
-/// not ask the quality check again (Refusal keeps its answers), nor the
-/// topology check about a target b whose star is the same too. The fidelity
-/// check reads more (certificates of image faces that lean on a's neighbours'
-/// stars), so an offer with a fidelity refusal is not recorded. Stars change
-/// only by merges (the cells around the merge's vertices) and relocations (the
-/// cells around the moved vertex), which tick the clock. The region-border step
-/// runs as before for every target that passes the orientations, so a is held
-/// by a border exactly as without skipping, and the mesh, the offers and the
-/// merges are the same. Across regions: an offer is recorded only when a's star
-/// lies in its region, and b's tick is read only past the border step (both
-/// stars in the region), so no thread reads a tick another thread may be
-/// writing, and the mesh is the same for any thread count.
 template <typename Tick>
 void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region, std::vector<VertexId>& held,
   Tick&& tick)
@@ -238,54 +192,25 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     if (mesh.CellsOf[a].empty() || s.Frozen[a] || (region >= 0 && s.Region[a] != region))
       continue;
     ++w.Counts.Offers;
-    // The last refusal of every merge of a, if a's star is the same since.
-    Refusal last;
-    if (s.Parameters.SkipRepeatedRefusals && s.Refusals[a].At != 0 && s.StarChanged[a] <= s.Refusals[a].At)
-      last = s.Refusals[a];
-    if (last.At != 0 && last.PassedOrientations == 0)
-    {
-      // Every target fails the orientation test again: nothing to ask (and
-      // the record stays true).
-      w.Counts.SkippedRepeats += last.Targets;
-      continue;
-    }
     const bool interior = TopologyCheck::IsInterior(mesh, a);
+    w.Quality.Prepare(mesh, a);
     NeighboursOf(mesh, a, w, w.Neighbours);
     w.Targets.clear();
-    bool starInRegion = true;
     for (VertexId x : w.Neighbours)
-    {
       w.Targets.emplace_back(SquaredLength(mesh, a, x), x);
-      starInRegion = starInRegion && (region < 0 || s.Region[x] == region);
-    }
     std::sort(w.Targets.begin(), w.Targets.end());
-    Refusal now{ 0, 0, 0, static_cast<std::uint8_t>(std::min<std::size_t>(w.Targets.size(), 255)) };
-    bool merged = false, blocked = false, fidelityRefused = false;
-    if (last.At == 0)
-      w.Quality.Prepare(mesh, a);
-    for (std::size_t i = 0; i < w.Targets.size(); ++i)
+    bool merged = false, blocked = false;
+    for (const auto& target : w.Targets)
     {
-      const VertexId b = w.Targets[i].second;
-      const std::uint64_t bit = i < kMaximumRecordedTargets ? std::uint64_t(1) << i : 0;
-      if (last.At != 0 ? !(last.PassedOrientations & bit) : checks.Quality && !w.Quality.OrientationsHold(mesh, b))
+      const VertexId b = target.second;
+      if (checks.Quality && !w.Quality.OrientationsHold(mesh, b))
       {
-        if (last.At != 0)
-          ++w.Counts.SkippedRepeats;
-        else
-          ++w.Counts.RejectedByQuality;
+        ++w.Counts.RejectedByQuality;
         continue;
       }
-      now.PassedOrientations |= bit;
       if (region >= 0 && !InRegion(s, a, b, region))
       {
         blocked = true;
-        continue;
-      }
-      if (last.At != 0 && (!(last.PassedAngles & bit) || s.StarChanged[b] <= last.At))
-      {
-        // Refused by the angles or (the same two stars) by the topology check.
-        ++w.Counts.SkippedRepeats;
-        now.PassedAngles |= last.PassedAngles & bit;
         continue;
       }
       w.Merge.Plan(mesh, a, b);
@@ -294,7 +219,6 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
         ++w.Counts.RejectedByQuality;
         continue;
       }
-      now.PassedAngles |= bit;
       if (interior)
       {
         // No interface passes through a's star: the merge moves none, so
@@ -318,17 +242,9 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       else if (checks.Fidelity && !w.Fidelity.Accepts(mesh, w.Merge))
       {
         ++w.Counts.RejectedByFidelity;
-        fidelityRefused = true;
         continue;
       }
       w.Merge.Apply(mesh);
-      // The changed stars: those of the vertices of the cells that vanished or moved.
-      w.Changed.clear();
-      for (CellId c : w.Merge.Removed)
-        w.Changed.insert(w.Changed.end(), mesh.Cells[c].begin(), mesh.Cells[c].begin() + mesh.VerticesPerCell());
-      for (const auto& cell : w.Merge.MovedCells)
-        w.Changed.insert(w.Changed.end(), cell.begin(), cell.begin() + mesh.VerticesPerCell());
-      MarkStarsChanged(s, w.Changed);
       if (checks.Fidelity && !interior)
         s.Anchors.Commit(w.Merge, w.Fidelity.Updates);
       ++w.Counts.Merges;
@@ -352,12 +268,6 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
     }
     if (!merged && blocked)
       held.push_back(a);
-    if (!merged)
-    {
-      const bool record = !blocked && !fidelityRefused && starInRegion && w.Targets.size() <= kMaximumRecordedTargets;
-      now.At = record ? s.Clock.load() : 0;
-      s.Refusals[a] = now;
-    }
   }
 }
 
@@ -368,7 +278,6 @@ void Add(DecimationCounts& total, const DecimationCounts& part)
   total.RejectedByQuality += part.RejectedByQuality;
   total.RejectedByTopology += part.RejectedByTopology;
   total.RejectedByFidelity += part.RejectedByFidelity;
-  total.SkippedRepeats += part.SkippedRepeats;
 }
 
 /// Morton key of a doubled-lattice position (coordinates below 2^21).
@@ -428,11 +337,9 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   clock.Finish("decimation setup");
 
   // Regions: runs of the Morton order of the vertices.
-  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, { 1 }, {}, {}, {}, {}, {} };
+  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, {}, {}, {} };
   shared.Stamps.assign(mesh.Position.size(), 0);
   shared.Key.assign(mesh.Position.size(), 0);
-  shared.StarChanged.assign(mesh.Position.size(), 0);
-  shared.Refusals.assign(mesh.Position.size(), Refusal{});
   for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
     if (!mesh.CellsOf[v].empty())
       shared.Key[v] = ShortestEdge(mesh, v);
@@ -558,9 +465,6 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
           touched[x] = 1;
           shared.Key[x] = ShortestEdge(mesh, x);
         }
-        // v's cells changed shape: the stars of v and of its neighbours.
-        scratch.Neighbours.push_back(v);
-        MarkStarsChanged(shared, scratch.Neighbours);
       }
       result.Counts.Relocations += moved;
       if (moved == 0)

@@ -27,6 +27,9 @@ for argument in "$@"; do
   esac
 done
 
+# CCACHE_BASEDIR for every compile the tiers start, the ones tests make included (the Slicer
+# stand-in build), so that another clone's objects are found in the cache.
+source "$here/ccache.sh"
 logs="$PWD/build-logs"
 mkdir -p "$logs"
 names=() seconds=() passed=() failed=()

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace labelmesher
 {
@@ -77,7 +78,8 @@ void RequestWholeImages(vtkInformationVector* port)
   }
 }
 
-vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell)
+vtkSmartPointer<vtkCellArray> MakeCellArray(
+  const std::vector<std::int64_t>& connectivity, int verticesPerCell, bool swapSecondAndThird)
 {
   const std::size_t cells = connectivity.size() / static_cast<std::size_t>(std::max(1, verticesPerCell));
   vtkNew<vtkIdTypeArray> offsets;
@@ -89,6 +91,14 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& con
   vtkNew<vtkIdTypeArray> ids;
   ids->SetNumberOfValues(static_cast<vtkIdType>(connectivity.size()));
   std::copy(connectivity.begin(), connectivity.end(), ids->GetPointer(0));
+  if (swapSecondAndThird)
+  {
+    vtkIdType* id = ids->GetPointer(0);
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+      std::swap(id[c * verticesPerCell + 1], id[c * verticesPerCell + 2]);
+    }
+  }
   auto array = vtkSmartPointer<vtkCellArray>::New();
   array->SetData(offsets, ids);
   return array;
@@ -200,16 +210,9 @@ vtkSmartPointer<vtkPoints> PhysicalPoints(const std::vector<Point3>& points, con
 void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output)
 {
   const int nv = mesh.VerticesPerCell();
-  std::vector<std::int64_t> connectivity = mesh.Connectivity;
-  if (mesh.Dimension == 3 && placement.ReversesOrientation())
-  {
-    for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-    {
-      std::swap(connectivity[c * nv + 1], connectivity[c * nv + 2]);
-    }
-  }
   output->SetPoints(PhysicalPoints(mesh.Points, placement));
-  output->SetCells(mesh.Dimension == 3 ? VTK_TETRA : VTK_TRIANGLE, MakeCellArray(connectivity, nv));
+  output->SetCells(mesh.Dimension == 3 ? VTK_TETRA : VTK_TRIANGLE,
+    MakeCellArray(mesh.Connectivity, nv, mesh.Dimension == 3 && placement.ReversesOrientation()));
   vtkNew<vtkIntArray> material;
   material->SetName(arrays::Material);
   material->SetNumberOfValues(static_cast<vtkIdType>(mesh.NumberOfCells()));

@@ -55,8 +55,10 @@ vtkDataArray* MaterialArray(vtkUnstructuredGrid* mesh, std::string& error);
 /// bits), or false with a sentence in `error`.
 bool CellMaterial(vtkDataArray* materials, vtkIdType c, std::int32_t& label, std::string& error);
 
-/// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity.
-vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<std::int64_t>& connectivity, int verticesPerCell);
+/// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity;
+/// `swapSecondAndThird` reverses every cell's orientation on the way.
+vtkSmartPointer<vtkCellArray> MakeCellArray(
+  const std::vector<std::int64_t>& connectivity, int verticesPerCell, bool swapSecondAndThird = false);
 
 /// One-tuple double array `name` = value.
 void AddScalarField(vtkFieldData* fd, const char* name, double value);

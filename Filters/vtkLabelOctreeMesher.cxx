@@ -19,6 +19,7 @@
 
 #include <exception>
 #include <string>
+#include <utility>
 
 vtkStandardNewMacro(vtkLabelOctreeMesher);
 
@@ -120,7 +121,7 @@ int vtkLabelOctreeMesher::RequestData(
     return 1;
   }
 
-  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(result.Mesh, this->IncludeBackground);
+  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(result.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
   labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
   this->AddParameters(output->GetFieldData(), placement.VoxelSize, result.NumberOfLeaves);

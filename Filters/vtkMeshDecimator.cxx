@@ -24,6 +24,7 @@
 #include <cmath>
 #include <exception>
 #include <string>
+#include <utility>
 
 vtkStandardNewMacro(vtkMeshDecimator);
 
@@ -231,11 +232,17 @@ int vtkMeshDecimator::RequestData(
     return 1;
   }
 
+  std::size_t before = 0;
+  for (std::int32_t m : mesh.Materials)
+  {
+    before += this->IncludeBackground || m != 0;
+  }
   const double share = this->MeasureOutput ? 0.8 : 1.0;
   labelmesher::DecimationResult result;
   try
   {
-    result = labelmesher::DecimateMesh(image, mesh, parameters, labelmesher::ForwardProgress(this, 0.0, share));
+    // Handed over: the decimator frees the copy once it holds its own.
+    result = labelmesher::DecimateMesh(image, std::move(mesh), parameters, labelmesher::ForwardProgress(this, 0.0, share));
   }
   catch (const labelmesher::AbortRequested&)
   {
@@ -248,16 +255,11 @@ int vtkMeshDecimator::RequestData(
     return 1;
   }
 
-  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(result.Mesh, this->IncludeBackground);
+  const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(result.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
   labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
 
   vtkFieldData* fd = output->GetFieldData();
-  std::size_t before = 0;
-  for (std::int32_t m : mesh.Materials)
-  {
-    before += this->IncludeBackground || m != 0;
-  }
   const labelmesher::DecimationCounts& counts = result.Counts;
   labelmesher::AddScalarField(fd, arrays::AngleBound, parameters.MinimumAngle);
   labelmesher::AddScalarField(fd, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance);

@@ -2,6 +2,7 @@
 #include "MeshingPipeline.h"
 
 #include "vtkBezierCurver.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
@@ -77,6 +78,30 @@ void Decimate(vtkImageData* image, const MeshingSettings& settings, const Filter
   }
   out.Mesh = CopyOf(decimator->GetOutput());
   out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
+  auto fieldsOnly = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  fieldsOnly->GetFieldData()->ShallowCopy(out.Initial->GetFieldData());
+  out.Initial = fieldsOnly;
+}
+
+/// vtkLabelOctreeMesher on the image; false when it stopped on request. The filter is gone on
+/// return, so that its output is held once, by `out`.
+bool Mesh(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
+{
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetImageToMeshDistance(settings.ImageToMeshDistance);
+  mesher->SetMeshToImageDistance(settings.MeshToImageDistance);
+  mesher->SetIncludeBackground(settings.Decimate || settings.IncludeBackground);
+  mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
+  mesher->SetInputData(image);
+  const FilterMessages messages = UpdateFilter(mesher, progress);
+  if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))
+  {
+    return false;
+  }
+  out.Initial = CopyOf(mesher->GetOutput());
+  out.Mesh = out.Initial;
+  out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
+  return true;
 }
 
 /// vtkBezierCurver on the final mesh. An untangling failure is an error of the filter that still
@@ -115,20 +140,10 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
     throw MeshingError("curving needs a 2D image (one extent of a single slice); this image is 3D");
   }
   MeshingOutcome out;
-  vtkNew<vtkLabelOctreeMesher> mesher;
-  mesher->SetImageToMeshDistance(settings.ImageToMeshDistance);
-  mesher->SetMeshToImageDistance(settings.MeshToImageDistance);
-  mesher->SetIncludeBackground(settings.Decimate || settings.IncludeBackground);
-  mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
-  mesher->SetInputData(image);
-  const FilterMessages messages = UpdateFilter(mesher, progress);
-  if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))
+  if (!Mesh(image, settings, progress, out))
   {
     return out;
   }
-  out.Initial = CopyOf(mesher->GetOutput());
-  out.Mesh = out.Initial;
-  out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
   if (settings.Decimate)
   {
     Decimate(image, settings, progress, out);

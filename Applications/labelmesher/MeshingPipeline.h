@@ -51,7 +51,9 @@ struct MeshingSettings
 struct MeshingOutcome
 {
   vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the final mesh
-  vtkSmartPointer<vtkUnstructuredGrid> Initial; ///< the mesher's output (Mesh itself without decimation)
+  /// The mesher's output (Mesh itself without decimation). Once decimated, only its field data
+  /// (parameters, stage timings) is kept: the initial mesh is the largest thing a run holds.
+  vtkSmartPointer<vtkUnstructuredGrid> Initial;
   vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
   /// With Curve: the cubic Bezier mesh curved from Mesh. When CurveError is set (untangling
   /// failed) it is the curver's marked mesh (cell data Valid), to inspect, not to use.

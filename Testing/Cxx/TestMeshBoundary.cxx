@@ -339,6 +339,35 @@ TEST(MeshSelection, KeepsTheChosenCellsInOrderAndRenumbersTheirPointsByFirstUse)
   EXPECT_EQ(two.Points.size(), 5u);
 }
 
+TEST(MeshSelection, TakingTheMeshOverGivesTheCopysResult)
+{
+  // Renumbering in place must match the copy: first-use order, unused points
+  // dropped, points already in order left alone (the mesher's case).
+  SimplexMesh mesh;
+  mesh.Dimension = 2;
+  for (int p = 0; p < 7; ++p)
+    mesh.Points.push_back({ double(p), double(p * p), 0 });
+  const std::vector<std::vector<std::int64_t>> connectivities = {
+    { 0, 1, 2, 2, 3, 4, 4, 5, 0, 4, 1, 3 }, // in order, p6 unused
+    { 6, 1, 2, 2, 3, 4, 4, 5, 0, 4, 1, 3 }, // out of order, all used
+    { 0, 1, 2, 1, 3, 2, 3, 4, 2, 4, 5, 6 }, // in order, all used: nothing moves
+  };
+  for (const auto& connectivity : connectivities)
+    for (const auto& materials : { std::vector<std::int32_t>{ 1, 3, 2, 1 }, std::vector<std::int32_t>{ 0, 3, 0, 1 } })
+      for (bool background : { false, true })
+      {
+        mesh.Connectivity = connectivity;
+        mesh.Materials = materials;
+        const SimplexMesh copied = SelectMaterials(static_cast<const SimplexMesh&>(mesh), background);
+        SimplexMesh handed = mesh;
+        const SimplexMesh taken = SelectMaterials(std::move(handed), background);
+        EXPECT_EQ(taken.Dimension, copied.Dimension);
+        EXPECT_EQ(taken.Points, copied.Points);
+        EXPECT_EQ(taken.Connectivity, copied.Connectivity);
+        EXPECT_EQ(taken.Materials, copied.Materials);
+      }
+}
+
 TEST(MeshSelection, NothingSelectedGivesAnEmptyMesh)
 {
   const SimplexMesh empty = SelectMaterials(KuhnCube({ 0, 0, 0, 0, 0, 0 }));

@@ -92,9 +92,20 @@ EditableMesh::EditableMesh(const SimplexMesh& mesh)
       throw std::invalid_argument("cell " + std::to_string(c) + " has a negative material");
     if (Orientation(Dimension, p) <= 0)
       throw std::invalid_argument("cell " + std::to_string(c) + " is inverted or flat");
+  }
+  // Exact capacities: grown by push_back, the lists would hold up to twice
+  // their cells, on the largest structure of the run.
+  {
+    std::vector<std::uint32_t> degree(points, 0);
+    for (std::size_t c = 0; c < cells; ++c)
+      for (int i = 0; i < nv; ++i)
+        ++degree[Cells[c][i]];
+    for (std::size_t v = 0; v < points; ++v)
+      CellsOf[v].reserve(degree[v]);
+  }
+  for (std::size_t c = 0; c < cells; ++c)
     for (int i = 0; i < nv; ++i)
       CellsOf[Cells[c][i]].push_back(static_cast<CellId>(c));
-  }
 
   // The box: the bounding box of the points.
   BoxLow = Position[Cells[0][0]];

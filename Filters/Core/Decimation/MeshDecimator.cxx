@@ -297,7 +297,9 @@ double ProvenAngleBound(int dimension)
   return dimension == 2 ? 45.0 : 30.0;
 }
 
-DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
+namespace
+{
+DecimationResult Decimate(const LabelImage& image, const SimplexMesh& input, SimplexMesh* release,
   const DecimationParameters& parameters, const ProgressObserver& observer)
 {
   Validate(image, input, parameters);
@@ -307,6 +309,8 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
     throw AbortRequested{};
 
   EditableMesh mesh(input);
+  if (release)
+    *release = SimplexMesh{};
   ValidateAgainstImage(mesh, image, parameters.MinimumAngle);
   const ImageBoundary boundary(image);
   ImageBoundaryAnchors anchors(boundary, parameters.ImageToMeshDistance);
@@ -485,6 +489,19 @@ DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& input,
   clock.Finish("decimation output");
   observer.Report("decimation done", 1.0);
   return result;
+}
+} // namespace
+
+DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& mesh,
+  const DecimationParameters& parameters, const ProgressObserver& observer)
+{
+  return Decimate(image, mesh, nullptr, parameters, observer);
+}
+
+DecimationResult DecimateMesh(const LabelImage& image, SimplexMesh&& mesh,
+  const DecimationParameters& parameters, const ProgressObserver& observer)
+{
+  return Decimate(image, mesh, &mesh, parameters, observer);
 }
 
 } // namespace labelmesher

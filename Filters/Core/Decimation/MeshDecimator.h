@@ -70,6 +70,10 @@ double ProvenAngleBound(int dimension);
 /// AbortRequested when `observer` says stop.
 DecimationResult DecimateMesh(const LabelImage& image, const SimplexMesh& mesh,
   const DecimationParameters& parameters, const ProgressObserver& observer = {});
+/// The same, taking `mesh` over: it is released as soon as the decimator's own
+/// copy is built, so the two never add up at the run's peak.
+DecimationResult DecimateMesh(const LabelImage& image, SimplexMesh&& mesh,
+  const DecimationParameters& parameters, const ProgressObserver& observer = {});
 
 } // namespace labelmesher
 

@@ -16,6 +16,9 @@ namespace labelmesher
 /// The cells of non-zero material (or every cell when `includeBackground`),
 /// with compacted points.
 SimplexMesh SelectMaterials(const SimplexMesh& mesh, bool includeBackground = false);
+/// The same, taking `mesh` over: when every cell is kept it is returned as it
+/// is (no copy: the meshes of large images are the run's peak memory).
+SimplexMesh SelectMaterials(SimplexMesh&& mesh, bool includeBackground = false);
 
 } // namespace labelmesher
 

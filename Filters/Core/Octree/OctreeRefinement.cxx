@@ -6,13 +6,44 @@
 #include <sc.h> // includes mpi.h when libsc was built with MPI (SC_ENABLE_MPI)
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <mutex>
+#include <new>
+#include <stdexcept>
+#include <string>
 
 namespace labelmesher
 {
 namespace detail
 {
+namespace
+{
+// libsc ends a failed allocation (or any failed check) by logging a message,
+// calling the abort handler and then abort() or MPI_Abort, which prints Open
+// MPI's eleven-line banner. Instead, its message is kept here and the handler
+// throws, so that the failure reaches the user as one line like any other
+// error: the forest left behind is leaked, which an exiting run can afford.
+thread_local std::string lastLibscMessage;
+thread_local int errnoAtLibscMessage = 0;
+
+void KeepLibscMessage(FILE*, const char*, int, int, int, int, const char* message)
+{
+  errnoAtLibscMessage = errno;
+  lastLibscMessage = message ? message : "";
+  while (!lastLibscMessage.empty() && (lastLibscMessage.back() == '\n' || lastLibscMessage.back() == ' '))
+    lastLibscMessage.pop_back();
+}
+
+void ThrowOnLibscAbort()
+{
+  const std::string message = lastLibscMessage;
+  // sc_malloc's failed check names only its source line; malloc's errno says why.
+  if (errnoAtLibscMessage == ENOMEM)
+    throw std::bad_alloc();
+  throw std::runtime_error("p4est stopped: " + (message.empty() ? std::string("no reason given") : message));
+}
+} // namespace
 
 void EnsureMPIInitialized()
 {
@@ -35,8 +66,9 @@ void EnsureMPIInitialized()
       });
     }
 #endif
-    sc_init(sc_MPI_COMM_SELF, 0, 0, nullptr, SC_LP_ERROR);
-    p4est_init(nullptr, SC_LP_ERROR);
+    sc_init(sc_MPI_COMM_SELF, 0, 0, KeepLibscMessage, SC_LP_ERROR);
+    p4est_init(KeepLibscMessage, SC_LP_ERROR);
+    sc_set_abort_handler(ThrowOnLibscAbort);
   });
 }
 

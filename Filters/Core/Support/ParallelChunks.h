@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -67,7 +68,8 @@ inline void SetThreadLimit(unsigned threads)
 /// Runs body(thread, begin, end) over chunks of [0, n) on up to `maxThreads`
 /// threads; one thread when n fits in one chunk. The first exception a body
 /// throws stops the remaining chunks and is rethrown here (an exception may
-/// not leave a std::thread).
+/// not leave a std::thread). Threads that cannot be started leave their share
+/// to the others.
 template <class Body>
 void ParallelChunks(std::size_t n, std::size_t chunk, Body&& body, unsigned maxThreads = MaxThreads())
 {
@@ -98,8 +100,20 @@ void ParallelChunks(std::size_t n, std::size_t chunk, Body&& body, unsigned maxT
     }
   };
   std::vector<std::thread> pool;
+  pool.reserve(threads);
   for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back(worker, t);
+  {
+    try
+    {
+      pool.emplace_back(worker, t);
+    }
+    catch (const std::system_error&)
+    {
+      // No room for another thread's stack (ulimit -v, a cgroup): the threads
+      // already started take every chunk; results do not depend on their number.
+      break;
+    }
+  }
   worker(0);
   for (auto& th : pool)
     th.join();

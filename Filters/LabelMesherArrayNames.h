@@ -33,6 +33,10 @@ inline constexpr char VoxelSize[] = "VoxelSize";
 inline constexpr char NumberOfLeaves[] = "NumberOfLeaves";
 inline constexpr char StageName[] = "StageName";
 inline constexpr char StageSeconds[] = "StageSeconds";
+/// MiB the run was estimated to need beyond what the process held when it
+/// started (Support/MemoryEstimate.h), and the voxel faces the estimate priced.
+inline constexpr char EstimatedMemory[] = "EstimatedMemory";
+inline constexpr char InterfaceFaces[] = "InterfaceFaces";
 
 // ---- field data: measured output (Filters/Core/Checks) ----
 inline constexpr char MinimumAngle[] = "MinimumAngle";

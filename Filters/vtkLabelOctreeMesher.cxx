@@ -7,7 +7,9 @@
 #include "LabelImageConversion.h"
 #include "LabelMesherArrayNames.h"
 #include "LabelOctreeMesher.h"
+#include "MemoryBudget.h"
 #include "Mesh/MeshSelection.h"
+#include "Support/MemoryEstimate.h"
 
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -18,6 +20,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <exception>
+#include <new>
 #include <string>
 #include <utility>
 
@@ -101,6 +104,16 @@ int vtkLabelOctreeMesher::RequestData(
     return 1;
   }
 
+  const labelmesher::MemoryEstimate estimate = labelmesher::EstimateMemory(image, this->CheckMemoryForDecimation);
+  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit);
+  const std::string refusal =
+    labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);
+  if (!refusal.empty())
+  {
+    vtkErrorMacro(<< refusal << ".");
+    return 1;
+  }
+
   const double meshShare = this->MeasureOutput ? 0.8 : 1.0;
   labelmesher::MesherParameters parameters;
   parameters.ImageToMeshDistance = this->ImageToMeshDistance;
@@ -115,6 +128,13 @@ int vtkLabelOctreeMesher::RequestData(
     vtkWarningMacro("Meshing aborted on request: output is empty.");
     return 1;
   }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Meshing failed: out of memory (estimated beforehand to need "
+      << labelmesher::FormatMiB(estimate.RunBytes) << " more; " << labelmesher::FormatMiB(budget.Bytes)
+      << " were available: " << budget.Source << ").");
+    return 1;
+  }
   catch (const std::exception& e)
   {
     vtkErrorMacro("Meshing failed: " << e.what());
@@ -125,6 +145,8 @@ int vtkLabelOctreeMesher::RequestData(
   labelmesher::PackVolumeMesh(kept, placement, output);
   labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
   this->AddParameters(output->GetFieldData(), placement.VoxelSize, result.NumberOfLeaves);
+  labelmesher::AddScalarField(output->GetFieldData(), labelmesher::arrays::EstimatedMemory, static_cast<double>(estimate.RunBytes) / (1 << 20));
+  labelmesher::AddScalarField(output->GetFieldData(), labelmesher::arrays::InterfaceFaces, static_cast<double>(estimate.InterfaceFaces));
   this->Measure(output->GetFieldData(), image, kept, meshShare, result.Timings);
   labelmesher::AddStageTimings(output->GetFieldData(), result.Timings);
   this->SetProgressText(nullptr);

@@ -61,7 +61,8 @@
  * (vtkMeshDecimator needs them). Field data (names in LabelMesherArrayNames.h):
  * - `ImageToMeshDistance`, `MeshToImageDistance`, `IncludeBackground`: the
  *   parameters used; `VoxelSize`: physical length of one distance unit;
- *   `NumberOfLeaves`: octree leaves;
+ *   `NumberOfLeaves`: octree leaves; `EstimatedMemory` (MiB) and
+ *   `InterfaceFaces`: the memory check's estimate and what it was priced from;
  * - `StageName` (string) and `StageSeconds` (double): wall time per stage of the
  *   core, and one `measure: ...` stage per check;
  * - when MeasureOutput is on: `MinimumAngle`, `MaximumAngle` (degrees, dihedral
@@ -160,6 +161,30 @@ public:
   vtkBooleanMacro(MeasureOutput, bool);
   ///@}
 
+  ///@{
+  /**
+   * The most memory the whole process may hold, in MiB (mebibytes). Before
+   * meshing, the filter estimates what the run needs from the image (its size
+   * and the voxel faces between labels, Filters/Core/Support/MemoryEstimate.h)
+   * and refuses, with an error naming both figures and an empty output, a run
+   * that does not fit. A limit set here replaces the machine's available
+   * memory (so it may also be raised, counting on swap); the cgroup's
+   * memory.max and ulimit -v always count. 0 (the default): the available memory.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
+  ///@{
+  /**
+   * Count a vtkMeshDecimator run on this output in the memory check, so that a
+   * mesh that could not be decimated is refused before it is built. Default off.
+   */
+  vtkSetMacro(CheckMemoryForDecimation, bool);
+  vtkGetMacro(CheckMemoryForDecimation, bool);
+  vtkBooleanMacro(CheckMemoryForDecimation, bool);
+  ///@}
+
   /**
    * The boundary surface (output port 1).
    */
@@ -183,6 +208,8 @@ protected:
   double MeshToImageDistance = 2.0;
   bool IncludeBackground = false;
   bool MeasureOutput = true;
+  double MemoryLimit = 0.0;
+  bool CheckMemoryForDecimation = false;
 
 private:
   vtkLabelOctreeMesher(const vtkLabelOctreeMesher&) = delete;

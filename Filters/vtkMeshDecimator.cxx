@@ -7,7 +7,9 @@
 #include "FilterSupport.h"
 #include "LabelImageConversion.h"
 #include "LabelMesherArrayNames.h"
+#include "MemoryBudget.h"
 #include "Mesh/MeshSelection.h"
+#include "Support/MemoryEstimate.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -23,6 +25,7 @@
 
 #include <cmath>
 #include <exception>
+#include <new>
 #include <string>
 #include <utility>
 
@@ -220,6 +223,15 @@ int vtkMeshDecimator::RequestData(
     vtkErrorMacro("Label image on port 1: " << error << ".");
     return 1;
   }
+  const std::uint64_t needed = labelmesher::EstimateDecimationMemory(static_cast<std::uint64_t>(input->GetNumberOfCells()));
+  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit);
+  const std::string refusal =
+    labelmesher::RefuseIfTooLarge(needed, std::to_string(input->GetNumberOfCells()) + " input cells", budget);
+  if (!refusal.empty())
+  {
+    vtkErrorMacro(<< refusal << ".");
+    return 1;
+  }
   labelmesher::SimplexMesh mesh;
   labelmesher::DecimationParameters parameters;
   parameters.MinimumAngle = this->MinimumAngle;
@@ -247,6 +259,13 @@ int vtkMeshDecimator::RequestData(
   catch (const labelmesher::AbortRequested&)
   {
     vtkWarningMacro("Decimation aborted on request: output is empty.");
+    return 1;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Decimation failed: out of memory (estimated beforehand to need "
+      << labelmesher::FormatMiB(needed) << " more; " << labelmesher::FormatMiB(budget.Bytes)
+      << " were available: " << budget.Source << ").");
     return 1;
   }
   catch (const std::exception& e)

@@ -144,6 +144,20 @@ public:
   vtkBooleanMacro(MeasureOutput, bool);
   ///@}
 
+  ///@{
+  /**
+   * The most memory the whole process may hold, in MiB (mebibytes). Before
+   * decimating, the filter estimates what it needs from the input's cell count
+   * (Filters/Core/Support/MemoryEstimate.h) and refuses, with an error naming
+   * both figures and an empty output, a run that does not fit this limit or
+   * A limit set here replaces the machine's available memory (so it may also
+   * be raised, counting on swap); the cgroup's memory.max and ulimit -v always
+   * count. 0 (the default): the available memory.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
   /**
    * The decimated interfaces (output port 1).
    */
@@ -164,6 +178,7 @@ protected:
   bool RelocateInteriorVertices = true;
   bool IncludeBackground = false;
   bool MeasureOutput = true;
+  double MemoryLimit = 0.0;
 
 private:
   vtkMeshDecimator(const vtkMeshDecimator&) = delete;

@@ -66,6 +66,25 @@ double ParseAngle(const std::string& text)
   return value;
 }
 
+/// "900M", "1.5G", "2048" (MiB) -> MiB.
+double ParseMemory(const std::string& text)
+{
+  std::string number = text;
+  double unit = 1.0;
+  if (!number.empty() && (number.back() == 'G' || number.back() == 'g' || number.back() == 'M' || number.back() == 'm'))
+  {
+    unit = (number.back() == 'G' || number.back() == 'g') ? 1024.0 : 1.0;
+    number.pop_back();
+  }
+  double value = -1.0;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
+  if (!ReadWhole(number, read, value) || !std::isfinite(value) || !(value > 0.0))
+  {
+    throw UsageError("--max-memory expects a positive size in MiB, or with M or G (900M, 1.5G), got '" + text + "'");
+  }
+  return value * unit;
+}
+
 double ParseTension(const std::string& text)
 {
   double value = -1.0;
@@ -128,6 +147,10 @@ std::string Usage()
          "  --include-background       keep the cells of label 0\n"
          "  --no-measure               do not measure the output (angles, distances,\n"
          "                             conformity, topology); saves 1-2x the meshing time\n"
+         "  --max-memory SIZE          the most memory the run may hold, MiB or with M/G\n"
+         "                             (900M, 1.5G); a run estimated not to fit it (or the\n"
+         "                             machine's available memory, ulimit -v) is refused\n"
+         "                             before it starts          [default: the machine's]\n"
          "  -q, --quiet                no progress bar, no summary (errors only)\n"
          "curve options:\n"
          "  --smoothness 1|2           continuity of the curved boundaries: C1, fitted\n"
@@ -287,6 +310,10 @@ Arguments ParseArguments(int argc, const char* const* argv)
         throw UsageError("--decimate and --no-decimate contradict each other");
       }
       decimateOption = word;
+    }
+    else if (word == "--max-memory")
+    {
+      args.Settings.MemoryLimit = ParseMemory(takeValue());
     }
     else if (word == "--no-measure")
     {

@@ -69,6 +69,7 @@ void Decimate(vtkImageData* image, const MeshingSettings& settings, const Filter
   decimator->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
   decimator->SetIncludeBackground(settings.IncludeBackground);
   decimator->SetMeasureOutput(settings.Measure);
+  decimator->SetMemoryLimit(settings.MemoryLimit);
   decimator->SetInputDataObject(0, out.Initial);
   decimator->SetInputDataObject(1, image);
   const FilterMessages messages = UpdateFilter(decimator, progress);
@@ -92,6 +93,8 @@ bool Mesh(vtkImageData* image, const MeshingSettings& settings, const FilterProg
   mesher->SetMeshToImageDistance(settings.MeshToImageDistance);
   mesher->SetIncludeBackground(settings.Decimate || settings.IncludeBackground);
   mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
+  mesher->SetMemoryLimit(settings.MemoryLimit);
+  mesher->SetCheckMemoryForDecimation(settings.Decimate);
   mesher->SetInputData(image);
   const FilterMessages messages = UpdateFilter(mesher, progress);
   if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))

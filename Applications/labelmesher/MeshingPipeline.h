@@ -39,6 +39,7 @@ struct MeshingSettings
   bool RelocateInteriorVertices = true; ///< the decimator moves interior vertices between rounds
   bool IncludeBackground = false;   ///< keep background cells in the final mesh
   bool Measure = true;              ///< measure the final mesh (angles, distances, topology)
+  double MemoryLimit = 0.0;         ///< MiB the process may hold at most; 0: the machine's limits only
   // vtkBezierCurver (`labelmesher curve`): 2D images only; its defaults
   bool Curve = false;
   int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)

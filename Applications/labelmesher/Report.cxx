@@ -15,6 +15,7 @@
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -122,6 +123,9 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
       r.Topology.push_back(e);
     }
   }
+  vtkFieldData* meshed = initial ? initial->GetFieldData() : fd;
+  r.EstimatedMemory = FieldValue(meshed, arrays::EstimatedMemory);
+  r.InterfaceFaces = FieldCount(meshed, arrays::InterfaceFaces);
   if (initial && initial != mesh)
   {
     AppendTimings(initial->GetFieldData(), r.Timings);
@@ -252,6 +256,17 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     total += t.second;
   }
   out << "  " << std::left << std::setw(20) << "total" << std::right << FormatFixed(total, 3) << " s\n";
+  if (r.PeakMemory > 0)
+  {
+    out << "Memory: peak " << FormatFixed(r.PeakMemory, 0) << " MiB resident; the run added "
+        << FormatFixed(std::max(0.0, r.PeakMemory - r.StartMemory), 0) << " MiB to the "
+        << FormatFixed(r.StartMemory, 0) << " MiB held after reading";
+    if (r.EstimatedMemory)
+    {
+      out << " (estimated beforehand: " << FormatFixed(*r.EstimatedMemory, 0) << " MiB)";
+    }
+    out << "\n";
+  }
 }
 
 void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& j)
@@ -413,6 +428,20 @@ void WriteJson(const RunReport& r, std::ostream& out)
   }
   j.EndArray();
   j.Key("total_seconds").Number(total);
+  j.Key("memory").BeginObject();
+  j.Key("peak_mib").Number(r.PeakMemory);
+  j.Key("after_reading_mib").Number(r.StartMemory);
+  j.Key("estimated_run_mib");
+  if (r.EstimatedMemory)
+  {
+    j.Number(*r.EstimatedMemory);
+  }
+  else
+  {
+    j.Null();
+  }
+  j.Key("interface_faces").Integer(r.InterfaceFaces);
+  j.EndObject();
   j.EndObject();
 }
 

@@ -74,6 +74,11 @@ struct RunReport
   std::vector<TopologyEntry> Topology;
   std::optional<DecimationEntry> Decimation; ///< absent with --no-decimate
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
+  /// Memory, MiB: the estimate the mesher checked before it started (absent if it did not), the
+  /// resident memory when the pipeline started (the image read) and the process's peak.
+  std::optional<double> EstimatedMemory;
+  long long InterfaceFaces = 0;
+  double StartMemory = 0, PeakMemory = 0;
 
   bool Measured() const { return MinimumAngle.has_value(); }
   bool TopologyMatches() const;

@@ -16,6 +16,7 @@
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
+#include "MemoryBudget.h"
 #include "MeshFiles.h"
 #include "SafeFile.h"
 
@@ -122,6 +123,7 @@ int Run(const Arguments& args)
   }
 
   const MeshingSettings& settings = args.Settings;
+  const double startMemory = labelmesher::ResidentBytes() / 1048576.0;
   TerminalProgress bars(!args.Quiet);
   const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
   bars.Finish();
@@ -139,6 +141,8 @@ int Run(const Arguments& args)
   report.Outputs = written;
   report.Materials = table;
   report.Notes = input.Notes;
+  report.StartMemory = startMemory;
+  report.PeakMemory = labelmesher::PeakResidentBytes() / 1048576.0;
   report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
   if (!curve)
   {

@@ -10,6 +10,7 @@ figures agree with the mesh."""
 import json
 import math
 import os
+import resource
 import subprocess
 import sys
 
@@ -24,7 +25,7 @@ EXE, WORK, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 PROVEN_BOUND = {3: 30.0, 2: 45.0}  # the initial mesh's, degrees (TestAngleBoundEnumeration)
 DEFAULT_MIN_ANGLE = 15.0           # the decimator's default --min-angle
 REPORT_KEYS = {"input", "output", "image", "parameters", "mesh", "decimation", "measured", "quality",
-               "fidelity", "topology", "timings", "total_seconds"}
+               "fidelity", "topology", "timings", "total_seconds", "memory"}
 
 
 def path(name):
@@ -396,6 +397,60 @@ def case_no_measure():
     assert not any(t["stage"].startswith("measure") for t in report["timings"]), report["timings"]
     assert read_mesh(path("mesh.vtu")).GetNumberOfCells() > 0
     print("OK: no measure")
+
+
+def interface_faces(labels):
+    """Voxel faces between different labels, outside = 0 (numpy, independent of the tool)."""
+    padded = np.pad(labels, 1)
+    return sum(int(np.count_nonzero(np.diff(padded, axis=a))) for a in range(padded.ndim))
+
+
+def case_memory_limit():
+    """A run that cannot fit is refused before it starts: one line, exit 1, nothing written."""
+    labels = ball(24, 9.5).astype(np.uint8)
+    labels[12:, :, :] *= 2
+    image = write_nrrd("ball.nrrd", labels, "uchar")
+    out, report_file = path("mesh.vtu"), path("report.json")
+    for stale in (out, report_file):
+        if os.path.exists(stale):
+            os.remove(stale)
+    # Refused by the estimate from the image, before meshing (not by the decimator's, after it).
+    refusal = run("mesh", image, "-o", out, "--report", report_file, "--max-memory", "1M")
+    expect_failure(refusal, "voxel faces between labels")
+    assert "memory limit of 1 MiB" in refusal.stderr, refusal.stderr
+    assert not os.path.exists(out) and not os.path.exists(report_file), "a refused run wrote a file"
+    expect_failure(run("mesh", image, "-o", out, "--max-memory", "lots"), "--max-memory", 2)
+
+    result = run("mesh", image, "-o", out, "--report", report_file, "--no-measure")
+    assert result.returncode == 0, result.stderr
+    assert "Memory: peak" in result.stdout and "estimated beforehand" in result.stdout, result.stdout
+    with open(report_file) as f:
+        memory = json.load(f)["memory"]
+    assert memory["interface_faces"] == interface_faces(labels), (memory, interface_faces(labels))
+    assert memory["estimated_run_mib"] > 0 and memory["peak_mib"] >= memory["after_reading_mib"] > 0, memory
+    # A generous limit is no refusal.
+    result = run("mesh", image, "-o", out, "--no-measure", "-q", "--max-memory", "64G")
+    assert result.returncode == 0, result.stderr
+
+    # Under ulimit -v: every run either meshes or ends with one plain line and no file (never
+    # libsc's or Open MPI's abort banner); the smallest limits are refused before meshing.
+    refused = 0
+    for mib in (100, 120, 200, 300, 400, 600, 1000):
+        if os.path.exists(out):
+            os.remove(out)
+        def limit(mib=mib):
+            resource.setrlimit(resource.RLIMIT_AS, (mib << 20, mib << 20))
+        result = subprocess.run([EXE, "mesh", image, "-o", out, "--no-measure", "-q"], capture_output=True,
+                                text=True, timeout=540, preexec_fn=limit)
+        err = result.stderr.strip()
+        print(f"ulimit -v {mib} MiB: exit {result.returncode}: {err}")
+        assert result.returncode in (0, 1), (mib, result.returncode, result.stderr)
+        if result.returncode == 1:
+            assert err.startswith("labelmesher:") and "\n" not in err, (mib, result.stderr)
+            assert not os.path.exists(out), f"ulimit -v {mib} MiB: a failed run left {out}"
+            refused += "ulimit -v" in err
+    assert refused > 0, "no run was refused by the ulimit -v check"
+    print("OK: memory limits")
 
 
 def case_no_decimate():

@@ -230,6 +230,40 @@ TEST(vtkLabelOctreeMesher, BadInputIsOneErrorAndAnEmptyOutput)
   }
 }
 
+TEST(vtkLabelOctreeMesher, MemoryLimitRefusesARunBeforeItStarts)
+{
+  auto image = MakeVtkImage(MakeBallLabels(24, 9.0));
+  for (bool decimation : { false, true })
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+    mesher->SetInputData(image);
+    mesher->SetMemoryLimit(1.0); // MiB: less than the process holds already
+    mesher->SetCheckMemoryForDecimation(decimation);
+    mesher->Update();
+    EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("needs about"), std::string::npos) << errors.Messages[0];
+    EXPECT_NE(errors.Messages[0].find("memory limit of 1 MiB"), std::string::npos) << errors.Messages[0];
+  }
+  // The estimate is recorded, and counting a decimation makes it no smaller.
+  double estimate[2] = { 0.0, 0.0 };
+  for (bool decimation : { false, true })
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    mesher->SetInputData(image);
+    mesher->SetMeasureOutput(false);
+    mesher->SetMemoryLimit(64.0 * 1024); // 64 GiB: replaces the machine's available memory
+    mesher->SetCheckMemoryForDecimation(decimation);
+    mesher->Update();
+    EXPECT_GT(mesher->GetOutput()->GetNumberOfCells(), 0);
+    estimate[decimation] = Field(mesher->GetOutput(), arrays::EstimatedMemory)->GetComponent(0, 0);
+    EXPECT_GT(Field(mesher->GetOutput(), arrays::InterfaceFaces)->GetComponent(0, 0), 0.0);
+  }
+  EXPECT_GT(estimate[0], 0.0);
+  EXPECT_GE(estimate[1], estimate[0]);
+}
+
 TEST(vtkLabelOctreeMesher, AbortStopsTheRunWithAnEmptyOutputAndAWarning)
 {
   for (const char* stopAt : { "octree", "fill", "measure" })

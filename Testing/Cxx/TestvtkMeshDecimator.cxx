@@ -162,6 +162,7 @@ TEST(vtkMeshDecimator, BadInputIsOneErrorAndAnEmptyOutput)
       "cover the image" },
     { "no background", [](Pipeline& p) { p.Mesher->SetIncludeBackground(false); }, "fill its box" },
     { "angle above the proven bound", [](Pipeline& p) { p.Decimator->SetMinimumAngle(35.0); }, "minimum angle" },
+    { "memory limit", [](Pipeline& p) { p.Decimator->SetMemoryLimit(1.0); }, "memory limit of 1 MiB" },
   };
   for (const Case& c : cases)
   {

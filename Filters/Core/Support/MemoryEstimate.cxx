@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The run's peak memory, priced from the image's interface faces.
+#include "Support/MemoryEstimate.h"
+
+#include <algorithm>
+
+namespace labelmesher
+{
+namespace
+{
+// Fitted to the shared volumes (Benchmarks/README.md, "Memory"): liver and
+// digimouse fix the figures, frog, torso, totalseg and the rat head check them.
+// Initial cells, background included, follow the boundary (leaves of one
+// voxel along it) plus a little of the volume (the coarse leaves elsewhere).
+constexpr double kCellsPerFace3D = 17.9, kCellsPerFace2D = 4.5, kCellsPerVoxel = 0.05;
+// Peak growth of the process, bytes: the mesher with its output packed for
+// VTK, per initial cell; the decimator with that output held, per initial
+// cell; per voxel, the core's copy of the (resampled) image and its pyramid;
+// and a fixed part (MPI's start, threads' arenas).
+constexpr double kMesherBytesPerCell = 112.0;
+constexpr double kHeldBytesPerCell = 50.0; ///< VTK's grid: 4 + 1 ids, a type, a label, a fifth of a point
+constexpr double kDecimatorBytesPerCell = 91.0;
+constexpr double kBytesPerVoxel = 3.1;
+constexpr double kFixedBytes = 25.0 * 1024 * 1024;
+
+std::string WithSeparators(std::uint64_t n)
+{
+  std::string digits = std::to_string(n);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
+    digits.insert(static_cast<std::size_t>(at), ",");
+  return digits;
+}
+} // namespace
+
+std::uint64_t CountInterfaceFaces(const LabelImage& image)
+{
+  const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
+  const bool flat = image.Dimension() == 2;
+  std::uint64_t faces = 0;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        const std::int32_t l = image.Labels[image.Index(i, j, k)];
+        // Each voxel owns its low faces; the image's high border adds the rest.
+        faces += l != image.At(i - 1, j, k);
+        faces += l != image.At(i, j - 1, k);
+        faces += (i == nx - 1 && l != 0) + (j == ny - 1 && l != 0);
+        if (!flat)
+          faces += (l != image.At(i, j, k - 1)) + (k == nz - 1 && l != 0);
+      }
+  return faces;
+}
+
+MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate)
+{
+  MemoryEstimate e;
+  e.Voxels = image.NumberOfVoxels();
+  e.InterfaceFaces = CountInterfaceFaces(image);
+  const double perFace = image.Dimension() == 2 ? kCellsPerFace2D : kCellsPerFace3D;
+  const double cells = perFace * static_cast<double>(e.InterfaceFaces) + kCellsPerVoxel * static_cast<double>(e.Voxels);
+  e.InitialCells = static_cast<std::uint64_t>(cells);
+  const double mesher = kMesherBytesPerCell * cells;
+  const double decimator = decimate ? (kHeldBytesPerCell + kDecimatorBytesPerCell) * cells : 0.0;
+  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
+    std::max(mesher, decimator));
+  return e;
+}
+
+std::uint64_t EstimateDecimationMemory(std::uint64_t cells)
+{
+  return static_cast<std::uint64_t>(kFixedBytes + kDecimatorBytesPerCell * static_cast<double>(cells));
+}
+
+std::string DescribeEstimate(const MemoryEstimate& estimate)
+{
+  return WithSeparators(estimate.Voxels) + " voxels, " + WithSeparators(estimate.InterfaceFaces) +
+    " voxel faces between labels";
+}
+
+} // namespace labelmesher

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_MemoryEstimate_h
+#define labelmesher_MemoryEstimate_h
+
+/**
+ * @file MemoryEstimate.h
+ * What a run will need, said before it starts. The initial mesh is the run's
+ * largest structure, and its size follows the image boundary: the octree is
+ * refined to single voxels along interfaces and stays coarse elsewhere. So the
+ * estimate counts the voxel faces between different labels (one pass over the
+ * image) and prices them with figures measured on the shared real volumes
+ * (Benchmarks/README.md, "Memory"): initial cells per interface face, peak
+ * bytes per initial cell, bytes per voxel for the image and its copies.
+ */
+
+#include "Support/LabelImage.h"
+
+#include <cstdint>
+#include <string>
+
+namespace labelmesher
+{
+
+struct MemoryEstimate
+{
+  std::uint64_t Voxels = 0;
+  std::uint64_t InterfaceFaces = 0; ///< voxel faces (pixel edges) between different labels, outside = 0
+  std::uint64_t InitialCells = 0;   ///< estimated cells of the initial mesh, background included
+  /// Estimated memory the run takes on top of what the process holds when it
+  /// starts (libraries, the image as read): its peak resident growth.
+  std::uint64_t RunBytes = 0;
+};
+
+/// Voxel faces (pixel edges in 2D) between different labels, the image's
+/// outside counting as label 0.
+std::uint64_t CountInterfaceFaces(const LabelImage& image);
+
+/// The memory of meshing `image` (and of decimating the mesh when `decimate`),
+/// as read -> mesh -> decimate -> write runs it in one process.
+MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate);
+
+/// The memory of decimating a mesh of `cells` cells (the decimator alone, its
+/// input already held).
+std::uint64_t EstimateDecimationMemory(std::uint64_t cells);
+
+/// "7,077,888 voxels, 2,301,114 voxel faces between labels".
+std::string DescribeEstimate(const MemoryEstimate& estimate);
+
+} // namespace labelmesher
+
+#endif

@@ -16,6 +16,7 @@
 // (Support/IO/LabelImageFile.h).
 
 #include "Decimation/MeshDecimator.h"
+#include "Decimation/RegionScheduler.h"
 #include "LabelImageFile.h"
 #include "LabelOctreeMesher.h"
 #include "Support/ParallelChunks.h"

@@ -11,6 +11,7 @@
 #include "Decimation/InteriorRelocation.h"
 #include "Decimation/MergeQueue.h"
 #include "Decimation/QualityCheck.h"
+#include "Decimation/RegionScheduler.h"
 #include "Decimation/TopologyCheck.h"
 #include "Mesh/MeshBoundary.h"
 #include "Support/ParallelChunks.h"
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -71,7 +73,7 @@ struct Shared
   EditableMesh& Mesh;
   ImageBoundaryAnchors& Anchors;
   const std::vector<std::uint8_t>& Frozen;
-  std::vector<std::int32_t> Region; ///< per vertex
+  const RegionScheduler& Regions;
   std::vector<std::uint32_t> Stamps;
   std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
   std::atomic<std::size_t> Offered{ 0 };
@@ -152,12 +154,12 @@ bool InRegion(const Shared& s, VertexId a, VertexId b, std::int32_t region)
 {
   // b first: its cells may be another region's, being edited right now,
   // until b is known to be ours.
-  if (s.Region[b] != region)
+  if (s.Regions.RegionOf(b) != region)
     return false;
   for (VertexId v : { a, b })
     for (CellId c : s.Mesh.CellsOf[v])
       for (int i = 0; i < s.Mesh.VerticesPerCell(); ++i)
-        if (s.Region[s.Mesh.Cells[c][i]] != region)
+        if (s.Regions.RegionOf(s.Mesh.Cells[c][i]) != region)
           return false;
   return true;
 }
@@ -189,7 +191,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       }
     }
     tick();
-    if (mesh.CellsOf[a].empty() || s.Frozen[a] || (region >= 0 && s.Region[a] != region))
+    if (mesh.CellsOf[a].empty() || s.Frozen[a] || (region >= 0 && s.Regions.RegionOf(a) != region))
       continue;
     ++w.Counts.Offers;
     const bool interior = TopologyCheck::IsInterior(mesh, a);
@@ -256,7 +258,7 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
       // the offers but leaves 40 % more cells.)
       NeighboursOf(mesh, b, w, w.Neighbours);
       for (VertexId x : w.Neighbours)
-        if ((region < 0 || s.Region[x] == region) && !s.Frozen[x])
+        if ((region < 0 || s.Regions.RegionOf(x) == region) && !s.Frozen[x])
         {
           s.Key[x] = std::min(s.Key[x], SquaredLength(mesh, x, b));
           queue.Push(x, s.Key[x]);
@@ -280,15 +282,76 @@ void Add(DecimationCounts& total, const DecimationCounts& part)
   total.RejectedByFidelity += part.RejectedByFidelity;
 }
 
-/// Morton key of a doubled-lattice position (coordinates below 2^21).
-std::uint64_t Morton(const Lattice& p, const Lattice& low)
+/// Algorithm 4's loop on the runs the RegionScheduler hands out: one Worker
+/// per thread, kept across runs and passes (its scratch is per mesh vertex),
+/// and the progress ticks; only the calling thread (0) talks to the observer.
+class MergeRuns final : public RegionScheduler::Work
 {
-  std::uint64_t key = 0;
-  for (int bit = 20; bit >= 0; --bit)
-    for (int a = 2; a >= 0; --a)
-      key = (key << 1) | ((static_cast<std::uint64_t>(p[a] - low[a]) >> bit) & 1u);
-  return key;
-}
+public:
+  MergeRuns(Shared& shared, const ImageBoundary& boundary, const ProgressObserver& observer, double vertices)
+    : S(shared)
+    , Boundary(boundary)
+    , Observer(observer)
+    , Vertices(vertices)
+  {
+  }
+
+  DecimationCounts Counts; ///< summed over the passes run since the caller last took them
+
+  void BeginPass(std::size_t runs, double start, double share) override
+  {
+    PerRun.assign(runs, DecimationCounts{});
+    Start = start;
+    Share = share;
+    S.Offered = 0;
+    S.Anchors.SetShared(runs > 1);
+    if (Workers.size() < MaxThreads())
+      Workers.resize(MaxThreads());
+  }
+
+  void OfferRun(unsigned thread, std::int32_t region, const std::vector<VertexId>& offered,
+    std::vector<VertexId>& held) override
+  {
+    std::unique_ptr<Worker>& worker = Workers[thread];
+    if (!worker)
+      worker = std::make_unique<Worker>(S, Boundary);
+    MergeQueue queue(S.Parameters.Order, S.Stamps);
+    for (VertexId v : offered)
+      if (!S.Frozen[v])
+        queue.Push(v, S.Key[v]);
+    worker->Counts = {};
+    // Offers are counted per run and published every 1024.
+    std::size_t local = 0;
+    auto tick = [&] {
+      if (++local % 1024 != 0)
+        return;
+      const std::size_t published = S.Offered += 1024;
+      if (thread == 0 &&
+        !Observer.Report("decimation", Start + Share * std::min(1.0, static_cast<double>(published) / Vertices)))
+        S.Abort = true;
+      if (S.Abort)
+        throw AbortRequested{};
+    };
+    OfferVertices(S, *worker, queue, region, held, tick);
+    PerRun[region < 0 ? 0 : static_cast<std::size_t>(region)] = worker->Counts;
+  }
+
+  void EndPass() override
+  {
+    S.Anchors.SetShared(false);
+    for (const DecimationCounts& c : PerRun)
+      Add(Counts, c);
+  }
+
+private:
+  Shared& S;
+  const ImageBoundary& Boundary;
+  const ProgressObserver& Observer;
+  double Vertices;
+  double Start = 0.0, Share = 0.0;
+  std::vector<DecimationCounts> PerRun;
+  std::vector<std::unique_ptr<Worker>> Workers;
+};
 
 } // namespace
 
@@ -340,103 +403,18 @@ DecimationResult Decimate(const LabelImage& image, const SimplexMesh& input, Sim
   result.Counts.FrozenVertices = static_cast<std::size_t>(std::count(frozen.begin(), frozen.end(), std::uint8_t(1)));
   clock.Finish("decimation setup");
 
-  // Regions: runs of the Morton order of the vertices.
-  Shared shared{ parameters, mesh, anchors, frozen, {}, {}, {}, {}, {}, {} };
+  RegionScheduler regions(mesh);
+  Shared shared{ parameters, mesh, anchors, frozen, regions, {}, {}, {}, {}, {} };
   shared.Stamps.assign(mesh.Position.size(), 0);
   shared.Key.assign(mesh.Position.size(), 0);
   for (VertexId v = 0; v < static_cast<VertexId>(mesh.Position.size()); ++v)
     if (!mesh.CellsOf[v].empty())
       shared.Key[v] = ShortestEdge(mesh, v);
-  // The alive vertices in Morton order (the octree's, as p4est partitions it).
-  std::vector<std::uint64_t> keys(mesh.Position.size());
-  for (std::size_t v = 0; v < mesh.Position.size(); ++v)
-    keys[v] = Morton(mesh.Position[v], mesh.BoxLow);
-  auto aliveInMortonOrder = [&] {
-    std::vector<VertexId> order;
-    for (std::size_t v = 0; v < mesh.Position.size(); ++v)
-      if (!mesh.CellsOf[v].empty())
-        order.push_back(static_cast<VertexId>(v));
-    std::sort(order.begin(), order.end(), [&](VertexId x, VertexId y) { return keys[x] < keys[y] || (keys[x] == keys[y] && x < y); });
-    return order;
-  };
-  shared.Region.assign(mesh.Position.size(), -1);
-
-  const double total = static_cast<double>(result.Counts.VerticesBefore);
-  // Offers are counted per thread and published every 1024; only the
-  // calling thread (0) talks to the observer.
-  auto tickFor = [&](unsigned thread, double start, double share) {
-    return [&, thread, start, share, local = std::size_t(0)]() mutable {
-      if (++local % 1024 != 0)
-        return;
-      const std::size_t offered = shared.Offered += 1024;
-      if (thread == 0 &&
-        !observer.Report("decimation", start + share * std::min(1.0, static_cast<double>(offered) / total)))
-        shared.Abort = true;
-      if (shared.Abort)
-        throw AbortRequested{};
-    };
-  };
-
-  // One pass over the vertices flagged in `offered`: the alive vertices, in
-  // Morton order, cut into runs of kDecimationRegionVertices with the cuts
-  // moved by `shift` (a fraction of a run); each run decimated on its own,
-  // on any core, with its border frozen (one run: no border, one thread).
-  // Returns the vertices a border held back.
-  auto pass = [&](const std::vector<std::uint8_t>& offered, double shift, bool oneRun, double start, double share) {
-    const std::vector<VertexId> order = aliveInMortonOrder();
-    const std::size_t n = order.size();
-    const std::size_t regions = oneRun ? 1 : std::max<std::size_t>(1, n / kDecimationRegionVertices);
-    const std::size_t offset = static_cast<std::size_t>(shift * n / regions);
-    // Run r holds positions [runStart(r), runStart(r + 1)) of the shifted
-    // order; the same bounds decide membership and what a run queues.
-    auto runStart = [&](std::size_t r) { return r * n / regions; };
-    for (std::size_t r = 0; r < regions; ++r)
-      for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
-        shared.Region[order[(i + offset) % n]] = regions > 1 ? static_cast<std::int32_t>(r) : -1;
-    std::vector<std::vector<VertexId>> held(regions);
-    std::vector<DecimationCounts> counts(regions);
-    shared.Offered = 0;
-    anchors.SetShared(regions > 1);
-    ParallelChunks(regions, 1, [&](unsigned thread, std::size_t begin, std::size_t end) {
-      Worker worker(shared, boundary);
-      auto tick = tickFor(thread, start, share);
-      for (std::size_t r = begin; r < end; ++r)
-      {
-        MergeQueue queue(parameters.Order, shared.Stamps);
-        for (std::size_t i = runStart(r); i < runStart(r + 1); ++i)
-        {
-          const VertexId v = order[(i + offset) % n];
-          if (offered[v] && !frozen[v])
-            queue.Push(v, shared.Key[v]);
-        }
-        worker.Counts = {};
-        OfferVertices(shared, worker, queue, regions > 1 ? static_cast<std::int32_t>(r) : -1, held[r], tick);
-        counts[r] = worker.Counts;
-      }
-    });
-    anchors.SetShared(false);
-    for (const auto& c : counts)
-      Add(result.Counts, c);
-    std::vector<std::uint8_t> next(mesh.Position.size(), 0);
-    for (const auto& list : held)
-      for (VertexId v : list)
-        next[v] = 1;
-    return std::make_pair(next, regions);
-  };
-
-  // The pass sequence over the vertices flagged in `offered`. Pass 1 offers
-  // them all; passes 2 and 3 what the borders held back, cut afresh from the
-  // vertices left (the mesh is coarser: as many vertices per run cover more
-  // of it) with the cuts moved by half and a quarter run, so that old borders
-  // lie inside the new runs; the last pass, on one thread, whatever is still
-  // held.
+  MergeRuns runs(shared, boundary, observer, static_cast<double>(result.Counts.VerticesBefore));
   auto decimate = [&](const std::vector<std::uint8_t>& offered, double start, double share) {
-    auto [held, regions] = pass(offered, 0.0, false, start, 0.85 * share);
-    const double shifts[] = { 0.5, 0.25 };
-    for (int k = 0; k < 2 && regions > 1; ++k)
-      std::tie(held, regions) = pass(held, shifts[k], false, start + (0.85 + 0.05 * k) * share, 0.05 * share);
-    if (regions > 1)
-      pass(held, 0.0, true, start + 0.95 * share, 0.05 * share);
+    regions.Decimate(offered, runs, start, share);
+    Add(result.Counts, runs.Counts);
+    runs.Counts = {};
   };
   decimate(std::vector<std::uint8_t>(mesh.Position.size(), 1), 0.1, 0.7);
 
@@ -456,7 +434,7 @@ DecimationResult Decimate(const LabelImage& image, const SimplexMesh& input, Sim
         throw AbortRequested{};
       std::vector<std::uint8_t> touched(mesh.Position.size(), 0);
       std::size_t moved = 0;
-      for (VertexId v : aliveInMortonOrder())
+      for (VertexId v : regions.AliveInMortonOrder())
       {
         if (frozen[v] || !relocation.TryMove(mesh, v, parameters.Checks.Quality))
           continue;

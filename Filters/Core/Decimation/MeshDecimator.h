@@ -16,14 +16,12 @@
  * cheap) and fidelity (FidelityCheck: both one-sided distances, exact
  * geometry). The queue offers the vertex with the shortest edge first.
  *
- * Parallel by regions: vertices are cut into runs of their Morton order (the
- * octree's order, as p4est partitions it); each region is decimated on its
- * own, on any core, with its border frozen (a merge may not touch a vertex of
- * another region, so regions never share a cell), and the vertices a border
- * held back are offered again in a second, sequential pass. The regions do
- * not depend on the number of threads, so neither does the mesh. The same
- * split runs per MPI rank on a p4est partition, with the ranks' borders
- * handled in the second pass.
+ * Parallel by regions: RegionScheduler cuts the vertices into runs of their
+ * Morton order (the octree's order, as p4est partitions it) and decimates
+ * each on its own, on any core, with its border frozen, then the borders. The
+ * runs do not depend on the number of threads, so neither does the mesh. A
+ * split per MPI rank or per streamed block would replace that unit; neither
+ * exists yet.
  */
 
 #include "Decimation/DecimationParameters.h"
@@ -51,9 +49,6 @@ struct DecimationResult
   std::vector<StageTiming> Timings;
 };
 
-/// Vertices per region of the parallel passes (the regions depend on the mesh
-/// only, never on the number of threads).
-constexpr std::size_t kDecimationRegionVertices = 16384;
 /// At most this many rounds of relocation and merges: they stop earlier, when
 /// no vertex moves (Cassini 100 at 15 degrees: after 12 rounds).
 constexpr int kRelocationRounds = 32;

@@ -229,6 +229,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     # The decimator needs the background cells (the mesh must fill its box); it drops them itself.
     mesher.SetIncludeBackground(parameters.include_background or parameters.decimate)
     mesher.SetMeasureOutput(not parameters.decimate)
+    # Refuse, before meshing, a run whose decimation would not fit in memory.
+    mesher.SetCheckMemoryForDecimation(parameters.decimate)
     starts = _stage_starts(parameters)
     _watch(mesher, starts[0], starts[1] - starts[0], progress, should_abort, errors)
     _update(mesher, errors, should_abort)

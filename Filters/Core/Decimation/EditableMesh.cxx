@@ -51,8 +51,18 @@ long long EditableMesh::Orientation(int dimension, const Lattice* p)
 }
 
 EditableMesh::EditableMesh(const SimplexMesh& mesh)
-  : Dimension(mesh.Dimension)
 {
+  Build(mesh, nullptr);
+}
+
+EditableMesh::EditableMesh(SimplexMesh&& mesh)
+{
+  Build(mesh, &mesh);
+}
+
+void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
+{
+  Dimension = mesh.Dimension;
   if (Dimension != 2 && Dimension != 3)
     throw std::invalid_argument("the mesh is neither triangles nor tetrahedra");
   const int nv = VerticesPerCell();
@@ -72,8 +82,12 @@ EditableMesh::EditableMesh(const SimplexMesh& mesh)
           " is not on the half-voxel lattice of the image: the mesh does not come from this image's mesher");
       Position[p][a] = static_cast<std::int32_t>(rounded);
     }
+  if (release)
+    std::vector<Point3>().swap(release->Points);
   Cells.resize(cells);
   Labels.assign(mesh.Materials.begin(), mesh.Materials.end());
+  if (release)
+    std::vector<std::int32_t>().swap(release->Materials);
   CellAlive.assign(cells, 1);
   CellsOf.resize(points);
   for (std::size_t c = 0; c < cells; ++c)
@@ -93,6 +107,8 @@ EditableMesh::EditableMesh(const SimplexMesh& mesh)
     if (Orientation(Dimension, p) <= 0)
       throw std::invalid_argument("cell " + std::to_string(c) + " is inverted or flat");
   }
+  if (release)
+    std::vector<std::int64_t>().swap(release->Connectivity);
   // Exact capacities: grown by push_back, the lists would hold up to twice
   // their cells, on the largest structure of the run.
   {

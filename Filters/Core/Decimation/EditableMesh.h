@@ -59,6 +59,9 @@ public:
   /// positively oriented, a face has more than two cells, or a face with one
   /// cell is not on the bounding box (the mesh does not fill it).
   explicit EditableMesh(const SimplexMesh& mesh);
+  /// The same, taking `mesh` over: each of its arrays is freed as soon as it
+  /// is copied, so that the two meshes never add up (the decimator's peak).
+  explicit EditableMesh(SimplexMesh&& mesh);
 
   int Dimension = 3;
   int VerticesPerCell() const { return Dimension + 1; }
@@ -92,6 +95,10 @@ public:
   std::size_t AliveVertices() const;
 
 private:
+  /// Both constructors: `release` is `mesh` when taken over (its arrays are
+  /// freed once copied), else null.
+  void Build(const SimplexMesh& mesh, SimplexMesh* release);
+
   struct FaceUse
   {
     std::array<VertexId, 3> Vertices; ///< sorted, -1 padded

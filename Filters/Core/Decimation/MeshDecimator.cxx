@@ -371,9 +371,8 @@ DecimationResult Decimate(const LabelImage& image, const SimplexMesh& input, Sim
   if (!observer.Report("decimation setup", 0.0))
     throw AbortRequested{};
 
-  EditableMesh mesh(input);
-  if (release)
-    *release = SimplexMesh{};
+  // Taken over, the input is freed array by array as the editable copy grows.
+  EditableMesh mesh = release ? EditableMesh(std::move(*release)) : EditableMesh(input);
   ValidateAgainstImage(mesh, image, parameters.MinimumAngle);
   const ImageBoundary boundary(image);
   ImageBoundaryAnchors anchors(boundary, parameters.ImageToMeshDistance);

@@ -27,6 +27,7 @@ int main(int argc, char* argv[])
   mesher->SetMeshToImageDistance(1.5);
   mesher->SetIncludeBackground(true);              // the decimator needs the whole box
   mesher->SetMeasureOutput(false);                 // the decimator measures its own output
+  mesher->SetCheckMemoryForDecimation(true);       // refuse up front what the decimator could not hold
   vtkNew<vtkMeshDecimator> decimator;
   decimator->SetInputConnection(0, mesher->GetOutputPort(0));
   decimator->SetInputConnection(1, reader->GetOutputPort());  // the image the mesh came from

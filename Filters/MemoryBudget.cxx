@@ -2,6 +2,8 @@
 // What the machine lets this process still allocate, and the refusal line.
 #include "MemoryBudget.h"
 
+#include "Support/MemoryEstimate.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -105,10 +107,7 @@ MemoryBudget AvailableMemory(double limitMiB)
 
 std::string FormatMiB(std::uint64_t bytes)
 {
-  std::string digits = std::to_string((bytes + kMiB / 2) / kMiB);
-  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
-    digits.insert(static_cast<std::size_t>(at), ",");
-  return digits + " MiB";
+  return WithThousandsSeparators((bytes + kMiB / 2) / kMiB) + " MiB";
 }
 
 std::string RefuseIfTooLarge(std::uint64_t neededBytes, const std::string& basis, const MemoryBudget& budget)

@@ -226,7 +226,7 @@ int vtkMeshDecimator::RequestData(
   const std::uint64_t needed = labelmesher::EstimateDecimationMemory(static_cast<std::uint64_t>(input->GetNumberOfCells()));
   const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit);
   const std::string refusal =
-    labelmesher::RefuseIfTooLarge(needed, std::to_string(input->GetNumberOfCells()) + " input cells", budget);
+    labelmesher::RefuseIfTooLarge(needed, labelmesher::WithThousandsSeparators(static_cast<std::uint64_t>(input->GetNumberOfCells())) + " input cells", budget);
   if (!refusal.empty())
   {
     vtkErrorMacro(<< refusal << ".");

@@ -22,14 +22,6 @@ constexpr double kHeldBytesPerCell = 50.0; ///< VTK's grid: 4 + 1 ids, a type, a
 constexpr double kDecimatorBytesPerCell = 91.0;
 constexpr double kBytesPerVoxel = 3.1;
 constexpr double kFixedBytes = 25.0 * 1024 * 1024;
-
-std::string WithSeparators(std::uint64_t n)
-{
-  std::string digits = std::to_string(n);
-  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
-    digits.insert(static_cast<std::size_t>(at), ",");
-  return digits;
-}
 } // namespace
 
 std::uint64_t CountInterfaceFaces(const LabelImage& image)
@@ -72,9 +64,17 @@ std::uint64_t EstimateDecimationMemory(std::uint64_t cells)
   return static_cast<std::uint64_t>(kFixedBytes + kDecimatorBytesPerCell * static_cast<double>(cells));
 }
 
+std::string WithThousandsSeparators(std::uint64_t n)
+{
+  std::string digits = std::to_string(n);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
+    digits.insert(static_cast<std::size_t>(at), ",");
+  return digits;
+}
+
 std::string DescribeEstimate(const MemoryEstimate& estimate)
 {
-  return WithSeparators(estimate.Voxels) + " voxels, " + WithSeparators(estimate.InterfaceFaces) +
+  return WithThousandsSeparators(estimate.Voxels) + " voxels, " + WithThousandsSeparators(estimate.InterfaceFaces) +
     " voxel faces between labels";
 }
 

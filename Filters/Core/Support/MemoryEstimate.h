@@ -43,6 +43,9 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate);
 /// input already held).
 std::uint64_t EstimateDecimationMemory(std::uint64_t cells);
 
+/// `n` with thousands separators: "7,077,888".
+std::string WithThousandsSeparators(std::uint64_t n);
+
 /// "7,077,888 voxels, 2,301,114 voxel faces between labels".
 std::string DescribeEstimate(const MemoryEstimate& estimate);
 

@@ -53,24 +53,32 @@ void Validate(const LabelImage& image, const MesherParameters& parameters)
 
 } // namespace
 
-MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& parameters, const ProgressObserver& observer)
+MesherOctree RefineOctree(const LabelImage& image, const MesherParameters& parameters,
+  const ProgressObserver& observer, StageClock& clock)
 {
   Validate(image, parameters);
-  MesherResult result;
-  StageClock clock(result.Timings);
-  const int dimension = image.Dimension();
-  const int depth = OctreeDepth(image);
+  MesherOctree octree;
+  octree.Depth = OctreeDepth(image);
 
   if (!observer.Report("label pyramid", 0.0))
     throw AbortRequested{};
-  const LabelPyramid pyramid(image, depth);
+  const LabelPyramid pyramid(image, octree.Depth);
   clock.Finish("label pyramid");
 
   const RefinementCriteria criteria(image, pyramid, parameters);
   const LeafEvaluator evaluate = [&criteria](const LeafBox& leaf) { return criteria.Judge(leaf); };
-  const std::vector<OctreeLeaf> leaves = BuildOctree(dimension, depth, evaluate, observer, 0.1, 0.6);
-  result.NumberOfLeaves = leaves.size();
+  octree.Leaves = BuildOctree(image.Dimension(), octree.Depth, evaluate, observer, 0.1, 0.6);
   clock.Finish("octree");
+  return octree;
+}
+
+MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& parameters, const ProgressObserver& observer)
+{
+  MesherResult result;
+  StageClock clock(result.Timings);
+  const int dimension = image.Dimension();
+  const std::vector<OctreeLeaf> leaves = RefineOctree(image, parameters, observer, clock).Leaves;
+  result.NumberOfLeaves = leaves.size();
 
   MeshAssembler assembler(dimension);
   for (std::size_t i = 0; i < leaves.size(); ++i)

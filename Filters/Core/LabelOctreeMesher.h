@@ -10,6 +10,7 @@
  */
 
 #include "MesherParameters.h"
+#include "Octree/LeafBox.h"
 #include "Support/LabelImage.h"
 #include "Support/ProgressObserver.h"
 #include "Support/StageClock.h"
@@ -33,6 +34,18 @@ struct MesherResult
   std::vector<StageTiming> Timings;
   std::size_t NumberOfLeaves = 0;
 };
+
+/// The refined octree of MeshLabelImage's first stages.
+struct MesherOctree
+{
+  int Depth = 0;                    ///< the octree covers 2^Depth voxels a side
+  std::vector<OctreeLeaf> Leaves;   ///< in p4est's (Morton) order
+};
+
+/// Stages 1 and 2 of MeshLabelImage (validation, label pyramid, octree),
+/// progress up to 0.6: what the block-streamed pipeline fills block by block.
+MesherOctree RefineOctree(const LabelImage& image, const MesherParameters& parameters,
+  const ProgressObserver& observer, StageClock& clock);
 
 /// Meshes `image`. Throws std::invalid_argument for bad input (no foreground,
 /// negative labels, empty extent) and AbortRequested when `observer` says stop.

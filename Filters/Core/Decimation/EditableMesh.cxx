@@ -52,15 +52,21 @@ long long EditableMesh::Orientation(int dimension, const Lattice* p)
 
 EditableMesh::EditableMesh(const SimplexMesh& mesh)
 {
-  Build(mesh, nullptr);
+  Build(mesh, nullptr, nullptr);
 }
 
 EditableMesh::EditableMesh(SimplexMesh&& mesh)
 {
-  Build(mesh, &mesh);
+  Build(mesh, &mesh, nullptr);
 }
 
-void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
+EditableMesh::EditableMesh(SimplexMesh&& mesh, const Lattice& boxLow, const Lattice& boxHigh)
+{
+  const Lattice box[2] = { boxLow, boxHigh };
+  Build(mesh, &mesh, box);
+}
+
+void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release, const Lattice* box)
 {
   Dimension = mesh.Dimension;
   if (Dimension != 2 && Dimension != 3)
@@ -123,7 +129,7 @@ void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
     for (int i = 0; i < nv; ++i)
       CellsOf[Cells[c][i]].push_back(static_cast<CellId>(c));
 
-  // The box: the bounding box of the points.
+  // The box: the bounding box of the points, or a piece's given box.
   BoxLow = Position[Cells[0][0]];
   BoxHigh = BoxLow;
   for (std::size_t p = 0; p < points; ++p)
@@ -136,6 +142,14 @@ void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
       BoxHigh[a] = std::max(BoxHigh[a], Position[p][a]);
     }
   }
+  if (box)
+  {
+    for (int a = 0; a < Dimension; ++a)
+      if (BoxLow[a] < box[0][a] || BoxHigh[a] > box[1][a])
+        throw std::invalid_argument("a point of the piece lies outside the box it was given");
+    BoxLow = box[0];
+    BoxHigh = box[1];
+  }
   BoxPlanes.assign(points, 0);
   for (std::size_t p = 0; p < points; ++p)
     for (int a = 0; a < Dimension; ++a)
@@ -146,9 +160,11 @@ void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
         BoxPlanes[p] |= std::uint8_t(1u << (2 * a + 1));
     }
 
-  // Every face has at most two cells, and a face with one lies on the box.
+  // Every face has at most two cells, and a face with one lies on the box
+  // (or, in a piece, on its border).
   std::vector<std::size_t> problems(MaxThreads(), cells);
   std::vector<int> kinds(MaxThreads(), 0);
+  std::vector<std::vector<VertexId>> border(MaxThreads());
   ParallelChunks(points, 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
     std::vector<FaceUse> scratch;
     for (std::size_t v = begin; v < end; ++v)
@@ -157,7 +173,12 @@ void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
         if (count > 2)
           kind = 1;
         else if (count == 1 && OutsidePlane(uses[0].Vertices) < 0)
-          kind = 2;
+        {
+          if (box)
+            border[thread].insert(border[thread].end(), uses[0].Vertices.begin(), uses[0].Vertices.begin() + Dimension);
+          else
+            kind = 2;
+        }
         if (kind != 0 && static_cast<std::size_t>(uses[0].Cell) < problems[thread])
         {
           problems[thread] = static_cast<std::size_t>(uses[0].Cell);
@@ -175,6 +196,13 @@ void EditableMesh::Build(const SimplexMesh& mesh, SimplexMesh* release)
     }
   if (kind == 1)
     throw std::invalid_argument("a face of cell " + std::to_string(first) + " is shared by more than two cells");
+  if (box)
+  {
+    Border.assign(points, 0);
+    for (const auto& list : border)
+      for (VertexId v : list)
+        Border[v] = 1;
+  }
   if (kind == 2)
     throw std::invalid_argument("a face of cell " + std::to_string(first) +
       " has one cell but is not on the mesh's bounding box: the mesh must fill its box (keep the background "
@@ -204,7 +232,10 @@ std::vector<InterfaceFace> EditableMesh::InterfaceFaces() const
       for (std::size_t v = part * chunk; v < std::min(Position.size(), (part + 1) * chunk); ++v)
         ForEachFaceFrom(static_cast<VertexId>(v), scratch, [&](const FaceUse* uses, std::size_t count) {
           const std::int32_t inside = Labels[uses[0].Cell];
-          const std::int32_t other = count == 2 ? Labels[uses[1].Cell] : OutsideLabel(OutsidePlane(uses[0].Vertices));
+          const int plane = count == 2 ? -1 : OutsidePlane(uses[0].Vertices);
+          if (count == 1 && plane < 0)
+            return; // a piece's border: the other side is not here
+          const std::int32_t other = count == 2 ? Labels[uses[1].Cell] : OutsideLabel(plane);
           if (other != inside)
             parts[part].push_back(InterfaceFace{ uses[0].Vertices, std::min(inside, other), std::max(inside, other) });
         });

@@ -62,6 +62,12 @@ public:
   /// The same, taking `mesh` over: each of its arrays is freed as soon as it
   /// is copied, so that the two meshes never add up (the decimator's peak).
   explicit EditableMesh(SimplexMesh&& mesh);
+  /// A piece of a larger mesh (a block of the streamed pipeline,
+  /// Streaming/StreamedPipeline.h), taken over: the box is the whole mesh's,
+  /// [boxLow, boxHigh] on the doubled lattice, and a face with one cell off
+  /// that box is the piece's border, shared with cells not here: its
+  /// vertices are flagged in Border. Nothing else changes.
+  EditableMesh(SimplexMesh&& mesh, const Lattice& boxLow, const Lattice& boxHigh);
 
   int Dimension = 3;
   int VerticesPerCell() const { return Dimension + 1; }
@@ -73,6 +79,10 @@ public:
   std::vector<std::vector<CellId>> CellsOf;  ///< alive cells around each vertex
   std::vector<std::uint8_t> BoxPlanes;       ///< bit f: the vertex lies on box plane f (axis f/2, high side f%2)
   Lattice BoxLow{}, BoxHigh{};
+  /// Per vertex, pieces only (else empty): on the piece's border. A border
+  /// vertex must never move or vanish (the decimator freezes it), and no
+  /// interface is seen across the border (InterfaceFaces skips its faces).
+  std::vector<std::uint8_t> Border;
 
   static std::int32_t OutsideLabel(int plane) { return -1 - plane; }
   static bool IsOutside(std::int32_t label) { return label < 0; }
@@ -85,7 +95,7 @@ public:
   int OutsidePlane(const std::array<VertexId, 3>& face) const;
 
   /// Every face between two different labels (the box's faces against its
-  /// outside included), each once, ordered by vertices.
+  /// outside included; a piece's border faces not), each once, ordered by vertices.
   std::vector<InterfaceFace> InterfaceFaces() const;
 
   /// The alive cells, with their points renumbered in order of first use
@@ -95,9 +105,10 @@ public:
   std::size_t AliveVertices() const;
 
 private:
-  /// Both constructors: `release` is `mesh` when taken over (its arrays are
-  /// freed once copied), else null.
-  void Build(const SimplexMesh& mesh, SimplexMesh* release);
+  /// Every constructor: `release` is `mesh` when taken over (its arrays are
+  /// freed once copied), else null; `box` (low, high) the given box of a
+  /// piece, else null (the points' bounding box, and no border allowed).
+  void Build(const SimplexMesh& mesh, SimplexMesh* release, const Lattice* box);
 
   struct FaceUse
   {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -42,10 +43,25 @@ public:
     : Mesh(mesh)
     , Faces(faces)
   {
+    // Bins aligned on the box, over the faces' bounding box only: a block of
+    // the streamed pipeline is small in the whole mesh's box.
+    int low[3], high[3];
     for (int a = 0; a < 3; ++a)
     {
-      Low[a] = mesh.BoxLow[a];
-      Bins[a] = (mesh.BoxHigh[a] - mesh.BoxLow[a]) / kBin + 1;
+      low[a] = faces.empty() ? mesh.BoxLow[a] : INT32_MAX;
+      high[a] = faces.empty() ? mesh.BoxLow[a] : INT32_MIN;
+    }
+    for (const InterfaceFace& f : faces)
+      for (int i = 0; i < mesh.Dimension; ++i)
+        for (int a = 0; a < 3; ++a)
+        {
+          low[a] = std::min(low[a], mesh.Position[f.Vertices[i]][a]);
+          high[a] = std::max(high[a], mesh.Position[f.Vertices[i]][a]);
+        }
+    for (int a = 0; a < 3; ++a)
+    {
+      Low[a] = mesh.BoxLow[a] + kBin * ((low[a] - mesh.BoxLow[a]) / kBin);
+      Bins[a] = (high[a] - Low[a]) / kBin + 1;
     }
     Start.assign(static_cast<std::size_t>(Bins[0]) * Bins[1] * Bins[2] + 1, 0);
     for (int pass = 0; pass < 2; ++pass)
@@ -80,11 +96,14 @@ public:
   void Query(const Point3& lo, const Point3& hi, std::vector<std::uint32_t>& out) const
   {
     out.clear();
+    // Bins beyond the grid hold no face: clipped, not clamped.
     int from[3], to[3];
     for (int a = 0; a < 3; ++a)
     {
-      from[a] = BinOf(std::floor(2.0 * lo[a]), a);
-      to[a] = BinOf(std::ceil(2.0 * hi[a]), a);
+      from[a] = std::max(0, Unclamped(std::floor(2.0 * lo[a]), a));
+      to[a] = std::min(Bins[a] - 1, Unclamped(std::ceil(2.0 * hi[a]), a));
+      if (from[a] > to[a])
+        return;
     }
     for (int z = from[2]; z <= to[2]; ++z)
       for (int y = from[1]; y <= to[1]; ++y)
@@ -99,10 +118,11 @@ public:
 
 private:
   static constexpr int kBin = 8;
-  int BinOf(double doubled, int axis) const
+  int Unclamped(double doubled, int axis) const
   {
-    return std::clamp(static_cast<int>(std::floor((doubled - Low[axis]) / kBin)), 0, Bins[axis] - 1);
+    return static_cast<int>(std::clamp(std::floor((doubled - Low[axis]) / kBin), -1.0, double(Bins[axis])));
   }
+  int BinOf(double doubled, int axis) const { return std::clamp(Unclamped(doubled, axis), 0, Bins[axis] - 1); }
   std::size_t Index(int x, int y, int z) const { return (static_cast<std::size_t>(z) * Bins[1] + y) * Bins[0] + x; }
   void Bounds(const InterfaceFace& f, int lo[3], int hi[3]) const
   {
@@ -168,8 +188,9 @@ std::array<VertexId, 3> ImageBoundaryAnchors::Certify(const EditableMesh& mesh, 
   return { -1, -1, -1 };
 }
 
-void ImageBoundaryAnchors::Initialize(
-  const EditableMesh& mesh, const std::vector<InterfaceFace>& faces, std::vector<std::uint8_t>& frozen)
+void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces,
+  std::vector<std::uint8_t>& frozen, const std::vector<std::uint8_t>* imageFaces,
+  std::vector<std::uint8_t>* uncertified)
 {
   Dimension = mesh.Dimension;
   const FaceGrid grid(mesh, faces);
@@ -177,6 +198,7 @@ void ImageBoundaryAnchors::Initialize(
   Anchor.assign(items, { -1, -1, -1 });
   std::vector<std::vector<VertexId>> pinnedVertices(items);
   std::vector<std::int32_t> failures(MaxThreads(), -1);
+  std::vector<std::vector<std::int32_t>> missed(MaxThreads()); // with `uncertified`
   ParallelChunks(items, 1024, [&](unsigned thread, std::size_t begin, std::size_t end) {
     std::vector<std::uint32_t> near;
     std::vector<InterfaceFace> candidates, star;
@@ -184,6 +206,8 @@ void ImageBoundaryAnchors::Initialize(
     std::vector<VertexId> vertices;
     for (std::size_t item = begin; item < end; ++item)
     {
+      if (imageFaces && !(*imageFaces)[static_cast<std::size_t>(ItemFace[item])])
+        continue;
       const ConvexPiece image = Boundary.Piece(static_cast<std::size_t>(ItemFace[item]));
       Point3 lo, hi;
       BoxAround(image, H + 1e-6, lo, hi);
@@ -219,7 +243,9 @@ void ImageBoundaryAnchors::Initialize(
           pieces.push_back(MeshFacePiece(mesh, f.Vertices));
         if (!WithinDistance(image, pieces, H))
         {
-          if (failures[thread] < 0)
+          if (uncertified)
+            missed[thread].push_back(ItemFace[item]);
+          else if (failures[thread] < 0)
             failures[thread] = static_cast<std::int32_t>(item);
           continue;
         }
@@ -239,12 +265,18 @@ void ImageBoundaryAnchors::Initialize(
         std::to_string(ItemSide[failure]) + " (mesh it with this bound or a smaller one first)");
     }
 
+  for (const auto& list : missed)
+    for (std::int32_t face : list)
+      (*uncertified)[static_cast<std::size_t>(face)] = 1;
+
   ItemsAt.assign(mesh.Position.size(), {});
   PrunedSize.assign(mesh.Position.size(), 0);
   StarAnchors.assign(mesh.Position.size(), 0);
   for (std::size_t item = 0; item < items; ++item)
   {
     const auto& anchor = Anchor[item];
+    if (anchor[0] == -1)
+      continue; // not selected
     if (anchor[0] == kPinned)
     {
       for (VertexId v : pinnedVertices[item])

@@ -45,7 +45,15 @@ public:
   /// `faces` (EditableMesh::InterfaceFaces), in parallel. Vertices that must
   /// never move are set in `frozen`. Throws std::invalid_argument when some
   /// image face is farther than the bound from the mesh boundary.
-  void Initialize(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces, std::vector<std::uint8_t>& frozen);
+  /// `imageFaces` (per ImageBoundary face), when given, limits this to the
+  /// flagged faces: the others are neither certified nor guarded, and the
+  /// caller must keep every mesh face near them as it is (a block of the
+  /// streamed pipeline freezes them, Streaming/StreamedPipeline.h).
+  /// `uncertified` (per ImageBoundary face), when given, receives the faces
+  /// with a side that no face of `mesh` certifies, instead of the exception:
+  /// the caller must then keep every mesh face near them as it is.
+  void Initialize(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces, std::vector<std::uint8_t>& frozen,
+    const std::vector<std::uint8_t>* imageFaces = nullptr, std::vector<std::uint8_t>* uncertified = nullptr);
 
   struct Update
   {

@@ -19,9 +19,9 @@
  * Parallel by regions: RegionScheduler cuts the vertices into runs of their
  * Morton order (the octree's order, as p4est partitions it) and decimates
  * each on its own, on any core, with its border frozen, then the borders. The
- * runs do not depend on the number of threads, so neither does the mesh. A
- * split per MPI rank or per streamed block would replace that unit; neither
- * exists yet.
+ * runs do not depend on the number of threads, so neither does the mesh.
+ * Streaming/StreamedPipeline.h runs the same decimation block by block
+ * (DecimationScope.h), so that the whole initial mesh is never held.
  */
 
 #include "Decimation/DecimationParameters.h"
@@ -56,6 +56,10 @@ constexpr int kRelocationRounds = 32;
 /// The smallest angle (degrees) a decimation may ask for: the initial mesh's
 /// proven bound (Testing/Cxx/TestAngleBoundEnumeration.cxx).
 double ProvenAngleBound(int dimension);
+
+/// Throws std::invalid_argument, naming the problem, for an angle outside
+/// (0, ProvenAngleBound] or a negative or infinite distance bound.
+void ValidateDecimationParameters(int dimension, const DecimationParameters& parameters);
 
 /// Decimates `mesh`, the whole box of the ORD mesh of `image` (background
 /// cells included: MesherResult::Mesh, or vtkLabelOctreeMesher with

@@ -31,6 +31,7 @@ public:
   /// A tetrahedron (3D) or triangle (2D, p[3] ignored) of material `label`.
   void AddCell(const std::array<LatticePoint, 4>& p, std::int32_t label);
 
+  std::size_t NumberOfCells() const { return Mesh.Materials.size(); }
   SimplexMesh Release();
 
 private:

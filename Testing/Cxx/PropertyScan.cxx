@@ -7,7 +7,14 @@
 // thousands before trusting a change to the mesher's per-leaf tests or the
 // decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan [--decimate|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate|--streamed CELLS|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
+//
+// --streamed CELLS: mesher and decimator block by block (StreamedPipeline.h),
+// blocks of CELLS initial cells (a few dozen: every image crosses many
+// borders); the decimated mesh must keep every guarantee. With
+// LABELMESHER_SCAN_UNSOUND_BORDERS=1 in the environment the blocks do not
+// freeze near image faces they cannot certify (unsound, to find images that
+// show it).
 //
 // --decimate: mesher then decimator, with the angle drawn per seed
 // (DrawDecimationParameters); the decimated mesh must keep every guarantee.
@@ -26,6 +33,8 @@
 #include "RandomLabelImages.h"
 #include "ThinFeatureImages.h"
 
+#include "Streaming/StreamedPipeline.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -36,7 +45,16 @@ using namespace labelmesher;
 int main(int argc, char** argv)
 {
   const bool curve = argc > 1 && std::string(argv[1]) == "--curve";
-  const bool decimate = curve || (argc > 1 && std::string(argv[1]) == "--decimate");
+  const bool streamed = argc > 2 && std::string(argv[1]) == "--streamed";
+  const bool decimate = curve || streamed || (argc > 1 && std::string(argv[1]) == "--decimate");
+  StreamingParameters streaming;
+  if (streamed)
+  {
+    streaming.BlockCells = std::strtoull(argv[2], nullptr, 10);
+    streaming.FreezeNearBorders = std::getenv("LABELMESHER_SCAN_UNSOUND_BORDERS") == nullptr;
+    ++argv;
+    --argc;
+  }
   if (decimate)
   {
     ++argv;
@@ -44,7 +62,8 @@ int main(int argc, char** argv)
   }
   if (argc < 5)
   {
-    std::fprintf(stderr, "usage: %s [--decimate|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+    std::fprintf(
+      stderr, "usage: %s [--decimate|--streamed CELLS|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
@@ -78,6 +97,7 @@ int main(int argc, char** argv)
     const Smoothness smoothness = testing::DrawSmoothness(seed);
     const auto problems = curve
       ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run)
+      : streamed ? testing::ViolatedStreamedGuarantees(random.Image, parameters, decimation, streaming, &counts)
       : decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
                  : testing::ViolatedMesherGuarantees(random.Image, parameters);
     misclassifiedLinear += run.MisclassifiedLinear;
@@ -100,7 +120,7 @@ int main(int argc, char** argv)
     std::fflush(stdout);
   }
   std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n",
-    curve ? "curved " : decimate ? "decimated " : "",
+    curve ? "curved " : streamed ? "streamed " : decimate ? "decimated " : "",
     family.c_str(), dimension, static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
     static_cast<unsigned long long>(failures), static_cast<unsigned long long>(count));
   if (curve)

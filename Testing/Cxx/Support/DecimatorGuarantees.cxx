@@ -41,5 +41,26 @@ std::vector<std::string> ViolatedDecimatorGuarantees(const LabelImage& image, co
     image, result.Mesh, decimation.MinimumAngle, decimation.ImageToMeshDistance, decimation.MeshToImageDistance);
 }
 
+std::vector<std::string> ViolatedStreamedGuarantees(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, DecimationCounts* counts,
+  StreamingCounts* streamed)
+{
+  StreamedResult result;
+  try
+  {
+    result = MeshAndDecimate(image, mesher, decimation, streaming);
+  }
+  catch (const std::exception& e)
+  {
+    return { std::string("streamed pipeline threw: ") + e.what() };
+  }
+  if (counts)
+    *counts = result.Decimated.Counts;
+  if (streamed)
+    *streamed = result.Streaming;
+  return ViolatedGuarantees(image, result.Decimated.Mesh, decimation.MinimumAngle, decimation.ImageToMeshDistance,
+    decimation.MeshToImageDistance);
+}
+
 } // namespace testing
 } // namespace labelmesher

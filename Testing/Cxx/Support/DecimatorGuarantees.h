@@ -12,6 +12,7 @@
 
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
+#include "Streaming/StreamedPipeline.h"
 
 #include <cstdint>
 #include <string>
@@ -32,6 +33,12 @@ DecimationParameters DrawDecimationParameters(std::uint64_t seed, int dimension,
 /// receives the decimator's counts.
 std::vector<std::string> ViolatedDecimatorGuarantees(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, DecimationCounts* counts = nullptr);
+
+/// The same through the block-streamed pipeline (StreamedPipeline.h) with
+/// `streaming`'s blocks; `streamed`, when given, receives its counts.
+std::vector<std::string> ViolatedStreamedGuarantees(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, DecimationCounts* counts = nullptr,
+  StreamingCounts* streamed = nullptr);
 
 } // namespace testing
 } // namespace labelmesher

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_StreamedPipeline_h
+#define labelmesher_StreamedPipeline_h
+
+/**
+ * @file StreamedPipeline.h
+ * Mesher and decimator block by block, so that the whole initial mesh never
+ * exists: the octree (Algorithm 2) is refined over the whole image, its
+ * leaves in Morton order are cut into blocks of about BlockCells initial
+ * cells (runs of p4est's order: the unit an MPI rank would take), and each
+ * block is filled (Algorithm 3), decimated with its border frozen (Algorithm
+ * 4, DecimationScope.h) and released; what is left of it joins the output.
+ * Last, the assembled mesh is decimated once more from the vertices the
+ * blocks froze. Peak memory is the output plus one block, not the initial mesh.
+ *
+ * Why every guarantee holds (the checks of each merge are today's, on a
+ * piece of the mesh):
+ *  - a block's border vertices never move, so the blocks stay one conforming
+ *    mesh of the box; a merge's checks read only its two vertices' stars,
+ *    which for a vertex off the border lie inside the block (the link
+ *    condition and the strata are those of the whole mesh there);
+ *  - h(M,I) is checked per merged face against the whole image boundary;
+ *  - h(I,M): an image face whose neighbourhood (its box grown by h(I,M))
+ *    lies in one block is certified and kept by that block; for any other
+ *    image face, every cell of the block that comes near it is frozen, so
+ *    the mesh faces within h(I,M) of it stay the initial mesh's until the
+ *    last pass (a merge only rebuilds its vertex's star, inside the star);
+ *  - the last pass re-checks the assembled mesh from scratch (angles, h(M,I)
+ *    of every face, a certificate for every image face) before merging.
+ * One block gives exactly DecimateMesh(MeshLabelImage(...)). The blocks
+ * depend on the image and BlockCells only, so the mesh is the same on any
+ * number of threads; with another BlockCells it differs (borders elsewhere).
+ */
+
+#include "Decimation/MeshDecimator.h"
+#include "MesherParameters.h"
+#include "Support/LabelImage.h"
+#include "Support/ProgressObserver.h"
+
+#include <cstddef>
+
+namespace labelmesher
+{
+
+/// Initial cells per block by default: about 150 MB of working memory.
+constexpr std::size_t kDefaultBlockCells = 1000000;
+
+struct StreamingParameters
+{
+  /// A block is closed once its leaves made this many initial cells (0: one
+  /// block, the whole mesh at once).
+  std::size_t BlockCells = kDefaultBlockCells;
+  /// For tests only: off, nothing is frozen near image faces that cross a
+  /// block border (unsound), to show that the tests catch it.
+  bool FreezeNearBorders = true;
+};
+
+struct StreamingCounts
+{
+  std::size_t Leaves = 0;
+  std::size_t Blocks = 0;
+  std::size_t LargestBlockCells = 0;  ///< initial cells of the largest block
+  std::size_t ForegroundCellsBefore = 0; ///< initial cells of a label other than 0
+  std::size_t AssembledCells = 0;     ///< cells entering the last pass (0: one block, no last pass)
+  /// Vertices the blocks froze (borders, cells near image faces no block could
+  /// certify yet, pinned certificates), summed over the blocks.
+  std::size_t BorderFrozenVertices = 0;
+  std::size_t MergesInBlocks = 0;     ///< merges done in the blocks (the rest: in the last pass)
+};
+
+struct StreamedResult
+{
+  DecimationResult Decimated;
+  StreamingCounts Streaming;
+};
+
+/// Meshes `image` with `mesher` and decimates with `decimation` block by
+/// block. Throws std::invalid_argument for bad input or parameters (as
+/// MeshLabelImage and DecimateMesh) and AbortRequested when `observer` says stop.
+StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming = {},
+  const ProgressObserver& observer = {});
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+//
+// The block-streamed pipeline (Streaming/StreamedPipeline.h):
+//   - one block is exactly mesher then decimator (DecimateMesh(MeshLabelImage));
+//   - with blocks of a few leaves, so that every image crosses many block
+//     borders, every guarantee of the decimated mesh holds (the independent
+//     measurements of MeshGuarantees.h) on smooth, box and thin-feature
+//     random images, 2D and 3D;
+//   - with a merge check switched off, the same tests find broken guarantees;
+//   - the mesh is the same on 1, 2, 3 and 8 threads.
+// Block keys (BlockPlan.h): a box of voxels lies in a run of leaves exactly
+// when the keys of its corners do.
+
+#include "DecimatorGuarantees.h"
+#include "MesherGuarantees.h"
+#include "LabelOctreeMesher.h"
+#include "RandomLabelImages.h"
+#include "Streaming/BlockPlan.h"
+#include "Streaming/StreamedPipeline.h"
+#include "Support/ParallelChunks.h"
+#include "Support/StageClock.h"
+#include "ThinFeatureImages.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace labelmesher
+{
+namespace
+{
+
+bool SameMesh(const SimplexMesh& a, const SimplexMesh& b)
+{
+  return a.Dimension == b.Dimension && a.Points == b.Points && a.Connectivity == b.Connectivity &&
+    a.Materials == b.Materials;
+}
+
+/// Blocks of a few leaves: 25 initial cells a block in 2D, 150 in 3D.
+StreamingParameters TinyBlocks(int dimension)
+{
+  StreamingParameters p;
+  p.BlockCells = dimension == 2 ? 25 : 150;
+  return p;
+}
+
+TEST(StreamedPipeline, OneBlockIsMesherThenDecimator)
+{
+  for (int dimension : { 2, 3 })
+    for (std::uint64_t seed = 40; seed < 46; ++seed)
+    {
+      const auto random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+      const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+      const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, mesher);
+      StreamingParameters oneBlock;
+      oneBlock.BlockCells = 0;
+      const StreamedResult streamed = MeshAndDecimate(random.Image, mesher, decimation, oneBlock);
+      const DecimationResult direct = DecimateMesh(random.Image, MeshLabelImage(random.Image, mesher).Mesh, decimation);
+      EXPECT_EQ(streamed.Streaming.Blocks, 1u);
+      EXPECT_EQ(streamed.Streaming.AssembledCells, 0u);
+      EXPECT_TRUE(SameMesh(streamed.Decimated.Mesh, direct.Mesh)) << "seed " << seed << ", " << dimension << "D";
+      EXPECT_EQ(streamed.Decimated.Counts.Merges, direct.Counts.Merges);
+    }
+}
+
+struct Family
+{
+  const char* Name;
+  int Dimension;
+  std::uint64_t FirstSeed;
+  int Images;
+  std::size_t BlockCells;
+  int MinimumBlocks; ///< per image, on average
+};
+
+class StreamedGuarantees : public ::testing::TestWithParam<Family>
+{
+};
+
+testing::RandomLabelImage Generate(const std::string& family, std::uint64_t seed, int dimension)
+{
+  if (family == "boxes")
+    return testing::GenerateRandomBoxImage(seed, dimension, dimension == 3 ? 14 : 24);
+  if (family == "thin")
+    return testing::GenerateThinFeatureImage(seed, dimension, dimension == 3 ? 12 : 20);
+  return testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+}
+
+TEST_P(StreamedGuarantees, EveryGuaranteeHoldsAcrossManyBlocks)
+{
+  const Family family = GetParam();
+  std::size_t blocks = 0, images = 0, before = 0, after = 0, mergesInBlocks = 0;
+  for (int i = 0; i < family.Images; ++i)
+  {
+    const std::uint64_t seed = family.FirstSeed + static_cast<std::uint64_t>(i);
+    const auto random = Generate(family.Name, seed, family.Dimension);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, family.Dimension, mesher);
+    DecimationCounts counts;
+    StreamingCounts streamed;
+    StreamingParameters streaming;
+    streaming.BlockCells = family.BlockCells;
+    const auto problems =
+      testing::ViolatedStreamedGuarantees(random.Image, mesher, decimation, streaming, &counts, &streamed);
+    std::ostringstream listed;
+    for (const std::string& problem : problems)
+      listed << "  " << problem << "\n";
+    ASSERT_TRUE(problems.empty()) << listed.str() << "seed " << seed << ", h(I,M) <= " << mesher.ImageToMeshDistance
+                                  << ", h(M,I) <= " << mesher.MeshToImageDistance << ", angle >= "
+                                  << decimation.MinimumAngle << "\n"
+                                  << random.Describe();
+    blocks += streamed.Blocks;
+    mergesInBlocks += streamed.MergesInBlocks;
+    ++images;
+    before += counts.CellsBefore;
+    after += counts.CellsAfter;
+  }
+  // Many borders per image, merges in the blocks as well as in the last
+  // pass, and still a decimation.
+  EXPECT_GE(blocks, static_cast<std::size_t>(family.MinimumBlocks) * images);
+  EXPECT_GT(mergesInBlocks, 0u);
+  EXPECT_LT(after * 2, before);
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, StreamedGuarantees,
+  ::testing::Values(Family{ "smooth", 2, 910000, 60, 25, 5 }, Family{ "smooth", 3, 911000, 12, 150, 5 },
+    Family{ "boxes", 2, 912000, 120, 25, 5 }, Family{ "boxes", 3, 913000, 12, 150, 5 },
+    Family{ "thin", 2, 914000, 60, 25, 5 }, Family{ "thin", 3, 915000, 8, 150, 5 },
+    // Larger blocks: most merges in the blocks, fewer borders.
+    Family{ "smooth", 2, 916000, 60, 100, 2 }, Family{ "smooth", 3, 917000, 12, 2000, 2 }),
+  [](const ::testing::TestParamInfo<Family>& info) {
+    return std::string(info.param.Name) + std::to_string(info.param.Dimension) + "D" +
+      std::to_string(info.param.BlockCells) + "cells";
+  });
+
+TEST(StreamedPipeline, WithAMergeCheckOffTheTestsFindBrokenGuarantees)
+{
+  // The blocks and the last pass merge with the decimator's checks; with one
+  // of them off, the measurements above must see what it guards.
+  for (int check = 0; check < 3; ++check)
+  {
+    int broken = 0;
+    for (int dimension : { 2, 3 })
+      for (std::uint64_t seed = 910000; seed < 910040 && broken == 0; ++seed)
+      {
+        const auto random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+        const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+        DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, mesher);
+        decimation.Checks.Quality = check != 0;
+        decimation.Checks.Topology = check != 1;
+        decimation.Checks.Fidelity = check != 2;
+        broken += !testing::ViolatedStreamedGuarantees(random.Image, mesher, decimation, TinyBlocks(dimension)).empty();
+      }
+    EXPECT_GT(broken, 0) << "check " << check << " (quality, topology, fidelity) switched off";
+  }
+}
+
+TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
+{
+  const auto random = testing::GenerateRandomLabelImageWithDescription(911003, 3);
+  const MesherParameters mesher = testing::DrawDistanceBounds(911003);
+  DecimationParameters decimation;
+  StreamingParameters blocks;
+  blocks.BlockCells = 2000;
+  SetThreadLimit(1);
+  const StreamedResult reference = MeshAndDecimate(random.Image, mesher, decimation, blocks);
+  ASSERT_GT(reference.Streaming.Blocks, 2u);
+  for (unsigned threads : { 2u, 3u, 8u })
+  {
+    SetThreadLimit(threads);
+    const StreamedResult other = MeshAndDecimate(random.Image, mesher, decimation, blocks);
+    EXPECT_TRUE(SameMesh(reference.Decimated.Mesh, other.Decimated.Mesh)) << threads << " threads";
+  }
+  SetThreadLimit(0);
+}
+
+TEST(BlockPlan, ABoxLiesInARunOfLeavesExactlyWhenItsCornerKeysDo)
+{
+  // Every box of a random image's octree against every run of its leaves:
+  // Holds says every voxel of the box is the run's, MayMeet is true whenever
+  // one is (checked voxel by voxel).
+  const auto random = testing::GenerateRandomLabelImageWithDescription(7, 3);
+  std::vector<StageTiming> timings;
+  StageClock clock(timings);
+  const MesherOctree octree = RefineOctree(random.Image, MesherParameters{}, {}, clock);
+  const auto& leaves = octree.Leaves;
+  ASSERT_GT(leaves.size(), 20u);
+  const int n = 1 << octree.Depth;
+  std::vector<std::size_t> leafOf(static_cast<std::size_t>(n) * n * n);
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+  {
+    const LeafBox& b = leaves[i].Box;
+    for (int z = 0; z < b.Size; ++z)
+      for (int y = 0; y < b.Size; ++y)
+        for (int x = 0; x < b.Size; ++x)
+          leafOf[(static_cast<std::size_t>(b.Origin[2] + z) * n + b.Origin[1] + y) * n + b.Origin[0] + x] = i;
+  }
+  testing::SeededRandom draw(99);
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    std::size_t first = static_cast<std::size_t>(draw.Int(0, static_cast<int>(leaves.size()) - 1));
+    std::size_t last = static_cast<std::size_t>(draw.Int(static_cast<int>(first) + 1, static_cast<int>(leaves.size())));
+    const KeyRange run = LeafRunKeys(leaves, first, last, 3, octree.Depth);
+    std::array<double, 3> lo, hi;
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = draw.Int(0, n - 1) - 0.5;
+      hi[a] = lo[a] + draw.Int(0, 3);
+    }
+    const VoxelBox box = GrownVoxelBox(lo, hi, 0.3 * draw.Int(0, 5), 3, octree.Depth);
+    bool all = true, any = false;
+    for (int z = box.Low[2]; z <= box.High[2]; ++z)
+      for (int y = box.Low[1]; y <= box.High[1]; ++y)
+        for (int x = box.Low[0]; x <= box.High[0]; ++x)
+        {
+          const std::size_t leaf = leafOf[(static_cast<std::size_t>(z) * n + y) * n + x];
+          const bool inRun = leaf >= first && leaf < last;
+          all = all && inRun;
+          any = any || inRun;
+        }
+    EXPECT_EQ(run.Holds(box), all) << "trial " << trial;
+    if (any)
+      EXPECT_TRUE(run.MayMeet(box)) << "trial " << trial;
+  }
+}
+
+} // namespace
+} // namespace labelmesher

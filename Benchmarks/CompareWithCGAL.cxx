@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // labelmesher_compare_cgal: meshes one label image with CGAL 5.5 Mesh_3
 // (labelled image domain, every connected component seeded, fixed random seed)
-// and with LabelMesher's whole pipeline, MeshLabelImage then DecimateMesh
-// (h(I,M) = h(M,I) = 2, 15 degrees), measures both meshes with the same checks
+// and with LabelMesher's whole pipeline, MeshAndDecimate (mesher and decimator
+// block by block, Streaming/StreamedPipeline.h; h(I,M) = h(M,I) = 2, 15 degrees), measures both meshes with the same checks
 // (MeshChecks.h) in the same index space, and prints them side by side with
 // ratios ours/CGAL, peak memory included. Reading and writing files are left
 // out on both sides (as the dissertation's timings leave them out). See
@@ -19,7 +19,8 @@
 //     --seed S            CGAL::get_default_random() = CGAL::Random(S)   (0)
 //     --h H               our h(I,M) = h(M,I) in voxels            (2)
 //     --min-angle DEG     our decimation angle in degrees         (15)
-//     --no-decimate       ours: the initial mesh only
+//     --no-decimate       ours: the initial mesh only (MeshLabelImage)
+//     --block-cells N     ours: initial cells per block (1000000; 0: one block)
 //     --name NAME         label for the SUMMARY line
 // The last line is machine-readable:
 //   SUMMARY name t_ours t_cgal cells_ours cells_cgal mindih_ours mindih_cgal
@@ -28,6 +29,7 @@
 #include "CGALImageMesher.h"
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
+#include "Streaming/StreamedPipeline.h"
 #include "Checks/MeshChecks.h"
 #include "SyntheticShapes.h"
 #include "LabelImageFile.h"
@@ -146,6 +148,7 @@ int main(int argc, char** argv)
   benchmarks::CGALMeshOptions cgal;
   double h = 2.0, minimumAngle = 15.0;
   bool decimate = true;
+  StreamingParameters streaming;
   int cassini = 0;
   std::string file, name;
   for (int a = 1; a < argc; ++a)
@@ -178,6 +181,8 @@ int main(int argc, char** argv)
       minimumAngle = value();
     else if (arg == "--no-decimate")
       decimate = false;
+    else if (arg == "--block-cells")
+      streaming.BlockCells = static_cast<std::size_t>(value());
     else if (arg == "--cassini")
       cassini = static_cast<int>(value());
     else if (arg == "--name")
@@ -222,7 +227,8 @@ int main(int argc, char** argv)
   std::printf("input %s: %d x %d x %d voxels, %zu labels besides 0\n", name.c_str(), image.Dimensions[0],
     image.Dimensions[1], image.Dimensions[2], voxelsPerLabel.size() - (voxelsPerLabel.count(0) ? 1 : 0));
   if (decimate)
-    std::printf("ours: MeshLabelImage then DecimateMesh, h(I,M) = h(M,I) = %g voxels, %g degrees\n", h, minimumAngle);
+    std::printf("ours: MeshAndDecimate (blocks of %zu initial cells), h(I,M) = h(M,I) = %g voxels, %g degrees\n",
+      streaming.BlockCells, h, minimumAngle);
   else
     std::printf("ours: MeshLabelImage h(I,M) = h(M,I) = %g voxels (not decimated)\n", h);
   std::printf("CGAL: Mesh_3 labelled image, facet_angle %g, facet_size %g, facet_distance %g, "
@@ -244,22 +250,27 @@ int main(int argc, char** argv)
     benchmarks::ResetPeakRss();
     const double before = benchmarks::RssMiB();
     const auto start = std::chrono::steady_clock::now();
-    MesherResult result = MeshLabelImage(image, parameters);
-    for (const auto& t : result.Timings)
-      ours.Timings.emplace_back(t.Stage, t.Seconds);
+    SimplexMesh mesh;
     if (decimate)
     {
       DecimationParameters decimation;
       decimation.ImageToMeshDistance = decimation.MeshToImageDistance = h;
       decimation.MinimumAngle = minimumAngle;
-      DecimationResult decimated = DecimateMesh(image, result.Mesh, decimation);
-      for (const auto& t : decimated.Timings)
+      StreamedResult streamed = MeshAndDecimate(image, parameters, decimation, streaming);
+      for (const auto& t : streamed.Decimated.Timings)
         ours.Timings.emplace_back(t.Stage, t.Seconds);
-      result.Mesh = std::move(decimated.Mesh);
+      mesh = std::move(streamed.Decimated.Mesh);
+    }
+    else
+    {
+      MesherResult result = MeshLabelImage(image, parameters);
+      for (const auto& t : result.Timings)
+        ours.Timings.emplace_back(t.Stage, t.Seconds);
+      mesh = std::move(result.Mesh);
     }
     ours.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ours.PeakMiB = benchmarks::PeakRssMiB() - before;
-    Measure(image, result.Mesh, ours);
+    Measure(image, mesh, ours);
   }
   catch (const std::exception& e)
   {

@@ -262,4 +262,21 @@ void PackInterfaces(const SimplexMesh& faces, const std::vector<std::pair<std::i
   output->GetCellData()->AddArray(materials);
 }
 
+void AddDecimationFields(vtkFieldData* fd, const DecimationParameters& parameters, const DecimationCounts& counts,
+  std::size_t keptBefore, std::size_t keptAfter)
+{
+  AddScalarField(fd, arrays::AngleBound, parameters.MinimumAngle);
+  AddScalarField(fd, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance);
+  AddScalarField(fd, arrays::MeshToImageDistance, parameters.MeshToImageDistance);
+  AddScalarField(fd, arrays::CellsBefore, static_cast<double>(keptBefore));
+  AddScalarField(fd, arrays::CellsAfter, static_cast<double>(keptAfter));
+  AddScalarField(fd, arrays::Merges, static_cast<double>(counts.Merges));
+  AddScalarField(fd, arrays::MergeOffers, static_cast<double>(counts.Offers));
+  AddScalarField(fd, arrays::MergesRejectedByQuality, static_cast<double>(counts.RejectedByQuality));
+  AddScalarField(fd, arrays::MergesRejectedByTopology, static_cast<double>(counts.RejectedByTopology));
+  AddScalarField(fd, arrays::MergesRejectedByFidelity, static_cast<double>(counts.RejectedByFidelity));
+  AddScalarField(fd, arrays::VerticesRelocated, static_cast<double>(counts.Relocations));
+  AddScalarField(fd, arrays::FrozenVertices, static_cast<double>(counts.FrozenVertices));
+}
+
 } // namespace labelmesher

@@ -12,6 +12,7 @@
  * Not installed.
  */
 
+#include "Decimation/DecimationParameters.h"
 #include "LabelImageConversion.h"
 #include "Mesh/SimplexMesh.h"
 #include "Support/ProgressObserver.h"
@@ -93,6 +94,12 @@ void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings);
 /// HausdorffBoundsCertified is 1; not certified, the figures stay and it is 0.
 void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMesh& mesh, double imageToMesh,
   double meshToImage, std::vector<StageTiming>& timings, const std::function<void(int checksDone)>& finished);
+
+/// The decimation's parameters and counts (AngleBound, the distances,
+/// CellsBefore/After of the kept materials, merges and refusals, relocations,
+/// frozen vertices), as vtkMeshDecimator documents them.
+void AddDecimationFields(vtkFieldData* fd, const DecimationParameters& parameters, const DecimationCounts& counts,
+  std::size_t keptBefore, std::size_t keptAfter);
 
 /// Port 0: `mesh` (index space) in physical space, tetrahedra or triangles,
 /// cell data Material (active scalars). Tetrahedra stay positively oriented

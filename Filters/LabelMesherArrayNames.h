@@ -67,6 +67,10 @@ inline constexpr char MergesRejectedByTopology[] = "MergesRejectedByTopology";
 inline constexpr char MergesRejectedByFidelity[] = "MergesRejectedByFidelity";
 inline constexpr char VerticesRelocated[] = "VerticesRelocated";
 inline constexpr char FrozenVertices[] = "FrozenVertices";
+// vtkLabelMesher (block-streamed)
+inline constexpr char Blocks[] = "Blocks";                       ///< blocks the run was cut into
+inline constexpr char LargestBlockCells[] = "LargestBlockCells"; ///< initial cells of the largest block
+inline constexpr char AssembledCells[] = "AssembledCells";       ///< cells entering the last pass (0: one block)
 
 // ---- field data: vtkBezierCurver ----
 inline constexpr char Smoothness[] = "Smoothness";

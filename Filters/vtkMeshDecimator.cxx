@@ -279,21 +279,9 @@ int vtkMeshDecimator::RequestData(
   labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
 
   vtkFieldData* fd = output->GetFieldData();
-  const labelmesher::DecimationCounts& counts = result.Counts;
-  labelmesher::AddScalarField(fd, arrays::AngleBound, parameters.MinimumAngle);
-  labelmesher::AddScalarField(fd, arrays::ImageToMeshDistance, parameters.ImageToMeshDistance);
-  labelmesher::AddScalarField(fd, arrays::MeshToImageDistance, parameters.MeshToImageDistance);
+  labelmesher::AddDecimationFields(fd, parameters, result.Counts, before, kept.NumberOfCells());
   labelmesher::AddScalarField(fd, arrays::IncludeBackground, this->IncludeBackground ? 1.0 : 0.0);
   labelmesher::AddScalarField(fd, arrays::VoxelSize, placement.VoxelSize);
-  labelmesher::AddScalarField(fd, arrays::CellsBefore, static_cast<double>(before));
-  labelmesher::AddScalarField(fd, arrays::CellsAfter, static_cast<double>(kept.NumberOfCells()));
-  labelmesher::AddScalarField(fd, arrays::Merges, static_cast<double>(counts.Merges));
-  labelmesher::AddScalarField(fd, arrays::MergeOffers, static_cast<double>(counts.Offers));
-  labelmesher::AddScalarField(fd, arrays::MergesRejectedByQuality, static_cast<double>(counts.RejectedByQuality));
-  labelmesher::AddScalarField(fd, arrays::MergesRejectedByTopology, static_cast<double>(counts.RejectedByTopology));
-  labelmesher::AddScalarField(fd, arrays::MergesRejectedByFidelity, static_cast<double>(counts.RejectedByFidelity));
-  labelmesher::AddScalarField(fd, arrays::VerticesRelocated, static_cast<double>(counts.Relocations));
-  labelmesher::AddScalarField(fd, arrays::FrozenVertices, static_cast<double>(counts.FrozenVertices));
   if (this->MeasureOutput)
   {
     this->SetProgressText("measure");

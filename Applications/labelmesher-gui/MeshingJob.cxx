@@ -5,7 +5,6 @@
 #include "vtkBezierCurver.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
-#include "vtkMeshDecimator.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -21,16 +20,16 @@ namespace gui
 namespace
 {
 /// Where each filter's progress lies in the whole run's: the stages' rough weights on real
-/// images (the decimator's merges and checks take most of the time), over the stages run.
+/// images (mesher and decimator, one streamed filter, take most of the time), over the stages run.
 class StageShares
 {
 public:
   explicit StageShares(const labelmesher_cli::MeshingSettings& settings)
   {
-    const double weights[3] = { 0.3, settings.Decimate ? 0.7 : 0.0, settings.Curve ? 0.3 : 0.0 };
-    const double total = weights[0] + weights[1] + weights[2];
+    const double weights[2] = { settings.Decimate ? 1.0 : 0.3, settings.Curve ? 0.3 : 0.0 };
+    const double total = weights[0] + weights[1];
     double start = 0.0;
-    for (int s = 0; s < 3; ++s)
+    for (int s = 0; s < 2; ++s)
     {
       this->Start[s] = start / total;
       this->Share[s] = weights[s] / total;
@@ -41,12 +40,12 @@ public:
   /// The whole run's fraction when `running` has done `fraction` of its own work.
   double Whole(vtkAlgorithm* running, double fraction) const
   {
-    const int s = vtkBezierCurver::SafeDownCast(running) ? 2 : vtkMeshDecimator::SafeDownCast(running) ? 1 : 0;
+    const int s = vtkBezierCurver::SafeDownCast(running) ? 1 : 0;
     return this->Start[s] + this->Share[s] * fraction;
   }
 
 private:
-  double Start[3] = {}, Share[3] = {};
+  double Start[2] = {}, Share[2] = {};
 };
 } // namespace
 
@@ -159,13 +158,6 @@ void MeshingJob::onThreadFinished()
     return;
   }
   this->Last = run->Outcome;
-  if (this->Last.Initial != this->Last.Mesh)
-  {
-    // Only the mesher's field data (its stage timings) is needed after the run, not its cells.
-    auto initial = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    initial->GetFieldData()->ShallowCopy(this->Last.Initial->GetFieldData());
-    this->Last.Initial = initial;
-  }
   this->LastSeconds = run->Seconds;
   emit finished();
 }

@@ -85,6 +85,25 @@ double ParseMemory(const std::string& text)
   return value * unit;
 }
 
+/// "1000000", "250k", "2M" -> a count of cells (0 allowed: one block).
+long long ParseBlockCells(const std::string& text)
+{
+  std::string number = text;
+  long long unit = 1;
+  if (!number.empty() && (number.back() == 'k' || number.back() == 'K' || number.back() == 'M' || number.back() == 'm'))
+  {
+    unit = (number.back() == 'k' || number.back() == 'K') ? 1000 : 1000000;
+    number.pop_back();
+  }
+  long long value = -1;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stoll(t, used); };
+  if (!ReadWhole(number, read, value) || value < 0 || value > 1000000000000LL / unit)
+  {
+    throw UsageError("--block-cells expects a whole number of cells >= 0 (with k or M: 500k, 2M), got '" + text + "'");
+  }
+  return value * unit;
+}
+
 double ParseTension(const std::string& text)
 {
   double value = -1.0;
@@ -147,6 +166,9 @@ std::string Usage()
          "  --include-background       keep the cells of label 0\n"
          "  --no-measure               do not measure the output (angles, distances,\n"
          "                             conformity, topology); saves 1-2x the meshing time\n"
+         "  --block-cells N            initial cells per block: the mesh is made and decimated\n"
+         "                             block by block, so that peak memory follows one block\n"
+         "                             and the output; 0: one block (k, M: 500k, 2M)  [default 1M]\n"
          "  --max-memory SIZE          the most memory the run may hold, MiB or with M/G\n"
          "                             (900M, 1.5G); a run estimated not to fit it (or the\n"
          "                             machine's available memory, ulimit -v) is refused\n"
@@ -175,6 +197,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
   std::string curveOption; // first curve-only option seen
   bool minAngleGiven = false;
   bool noRelocateGiven = false;
+  bool blockCellsGiven = false;
   std::string decimateOption; // --decimate or --no-decimate, if given
   for (std::size_t w = 0; w < words.size(); ++w)
   {
@@ -311,6 +334,11 @@ Arguments ParseArguments(int argc, const char* const* argv)
       }
       decimateOption = word;
     }
+    else if (word == "--block-cells")
+    {
+      args.Settings.BlockCells = ParseBlockCells(takeValue());
+      blockCellsGiven = true;
+    }
     else if (word == "--max-memory")
     {
       args.Settings.MemoryLimit = ParseMemory(takeValue());
@@ -352,6 +380,10 @@ Arguments ParseArguments(int argc, const char* const* argv)
   if (noRelocateGiven && !args.Settings.Decimate)
   {
     throw UsageError("--no-relocate is a decimator option: it cannot go with --no-decimate");
+  }
+  if (blockCellsGiven && !args.Settings.Decimate)
+  {
+    throw UsageError("--block-cells streams mesher and decimator: it cannot go with --no-decimate");
   }
   if (minAngleGiven && !args.Settings.Decimate)
   {

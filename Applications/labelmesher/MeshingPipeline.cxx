@@ -4,8 +4,8 @@
 #include "vtkBezierCurver.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
+#include "vtkLabelMesher.h"
 #include "vtkLabelOctreeMesher.h"
-#include "vtkMeshDecimator.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
@@ -61,40 +61,40 @@ vtkSmartPointer<T> CopyOf(T* data)
   return copy;
 }
 
-/// vtkMeshDecimator on the mesher's output (with its background cells) and the image.
-void Decimate(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
+/// vtkLabelMesher: mesher and decimator block by block; false when it stopped on request.
+bool MeshAndDecimate(
+  vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
 {
-  vtkNew<vtkMeshDecimator> decimator;
-  decimator->SetMinimumAngle(settings.MinimumAngle);
-  decimator->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
-  decimator->SetIncludeBackground(settings.IncludeBackground);
-  decimator->SetMeasureOutput(settings.Measure);
-  decimator->SetMemoryLimit(settings.MemoryLimit);
-  decimator->SetInputDataObject(0, out.Initial);
-  decimator->SetInputDataObject(1, image);
-  const FilterMessages messages = UpdateFilter(decimator, progress);
-  if (!FinishStage(decimator, decimator->GetOutput(), messages, "decimator", OnError::Throw, out))
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetImageToMeshDistance(settings.ImageToMeshDistance);
+  mesher->SetMeshToImageDistance(settings.MeshToImageDistance);
+  mesher->SetMinimumAngle(settings.MinimumAngle);
+  mesher->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
+  mesher->SetBlockCells(static_cast<vtkIdType>(settings.BlockCells));
+  mesher->SetIncludeBackground(settings.IncludeBackground);
+  mesher->SetMeasureOutput(settings.Measure);
+  mesher->SetMemoryLimit(settings.MemoryLimit);
+  mesher->SetInputData(image);
+  const FilterMessages messages = UpdateFilter(mesher, progress);
+  if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))
   {
-    return;
+    return false;
   }
-  out.Mesh = CopyOf(decimator->GetOutput());
-  out.Interfaces = CopyOf(decimator->GetBoundaryOutput());
-  auto fieldsOnly = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  fieldsOnly->GetFieldData()->ShallowCopy(out.Initial->GetFieldData());
-  out.Initial = fieldsOnly;
+  out.Mesh = CopyOf(mesher->GetOutput());
+  out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
+  return true;
 }
 
-/// vtkLabelOctreeMesher on the image; false when it stopped on request. The filter is gone on
-/// return, so that its output is held once, by `out`.
+/// vtkLabelOctreeMesher alone (no decimation); false when it stopped on request. The filter is
+/// gone on return, so that its output is held once, by `out`.
 bool Mesh(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, MeshingOutcome& out)
 {
   vtkNew<vtkLabelOctreeMesher> mesher;
   mesher->SetImageToMeshDistance(settings.ImageToMeshDistance);
   mesher->SetMeshToImageDistance(settings.MeshToImageDistance);
-  mesher->SetIncludeBackground(settings.Decimate || settings.IncludeBackground);
-  mesher->SetMeasureOutput(settings.Measure && !settings.Decimate);
+  mesher->SetIncludeBackground(settings.IncludeBackground);
+  mesher->SetMeasureOutput(settings.Measure);
   mesher->SetMemoryLimit(settings.MemoryLimit);
-  mesher->SetCheckMemoryForDecimation(settings.Decimate);
   mesher->SetInputData(image);
   const FilterMessages messages = UpdateFilter(mesher, progress);
   if (!FinishStage(mesher, mesher->GetOutput(), messages, "mesher", OnError::Throw, out))
@@ -143,13 +143,9 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
     throw MeshingError("curving needs a 2D image (one extent of a single slice); this image is 3D");
   }
   MeshingOutcome out;
-  if (!Mesh(image, settings, progress, out))
+  if (!(settings.Decimate ? MeshAndDecimate(image, settings, progress, out) : Mesh(image, settings, progress, out)))
   {
     return out;
-  }
-  if (settings.Decimate)
-  {
-    Decimate(image, settings, progress, out);
   }
   if (settings.Curve && !out.Aborted)
   {

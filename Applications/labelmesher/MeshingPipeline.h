@@ -4,10 +4,10 @@
 
 /**
  * @file MeshingPipeline.h
- * The pipeline both front ends run: vtkLabelOctreeMesher, then (by default)
- * vtkMeshDecimator on the mesher's whole box, which needs the background cells
- * and measures the final mesh itself (so the mesher does not measure), then
- * (2D images, on request) vtkBezierCurver on that mesh with the image.
+ * The pipeline both front ends run: by default vtkLabelMesher (mesher and
+ * decimator block by block, so that the whole initial mesh is never held);
+ * with --no-decimate vtkLabelOctreeMesher alone; then (2D images, on request)
+ * vtkBezierCurver on that mesh with the image.
  */
 
 #include "FilterRun.h"
@@ -34,7 +34,8 @@ struct MeshingSettings
 {
   double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
   double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
-  bool Decimate = true;             ///< run vtkMeshDecimator after the mesher
+  bool Decimate = true;             ///< decimate the mesher's mesh (vtkLabelMesher, streamed)
+  long long BlockCells = 1000000;   ///< initial cells per streamed block; 0: one block
   double MinimumAngle = 15.0;       ///< degrees, the decimator's bound; (0, 30] in 3D, (0, 45] in 2D
   bool RelocateInteriorVertices = true; ///< the decimator moves interior vertices between rounds
   bool IncludeBackground = false;   ///< keep background cells in the final mesh
@@ -52,8 +53,8 @@ struct MeshingSettings
 struct MeshingOutcome
 {
   vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the final mesh
-  /// The mesher's output (Mesh itself without decimation). Once decimated, only its field data
-  /// (parameters, stage timings) is kept: the initial mesh is the largest thing a run holds.
+  /// The mesher's output (Mesh itself) without decimation; null when decimated (streamed: the
+  /// initial mesh is never whole, and Mesh's field data tells about it).
   vtkSmartPointer<vtkUnstructuredGrid> Initial;
   vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
   /// With Curve: the cubic Bezier mesh curved from Mesh. When CurveError is set (untangling

@@ -144,6 +144,9 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
     d.RejectedByFidelity = FieldCount(fd, arrays::MergesRejectedByFidelity);
     d.FrozenVertices = FieldCount(fd, arrays::FrozenVertices);
     d.Relocations = FieldCount(fd, arrays::VerticesRelocated);
+    d.Blocks = FieldCount(fd, arrays::Blocks);
+    d.LargestBlockCells = FieldCount(fd, arrays::LargestBlockCells);
+    d.AssembledCells = FieldCount(fd, arrays::AssembledCells);
     r.Decimation = d;
   }
   return r;
@@ -213,6 +216,11 @@ void PrintSummary(const RunReport& r, std::ostream& out)
         << FormatFixed(d.AngleBound, 2) << " deg; " << d.Merges << " merges, refused by quality "
         << d.RejectedByQuality << ", topology " << d.RejectedByTopology << ", fidelity " << d.RejectedByFidelity
         << "; " << d.Relocations << " interior vertices relocated)\n";
+    if (d.Blocks > 1)
+    {
+      out << "Streamed in " << d.Blocks << " blocks (largest " << d.LargestBlockCells << " initial " << cellName
+          << "); last pass over " << d.AssembledCells << " " << cellName << "\n";
+    }
   }
   else
   {
@@ -288,6 +296,9 @@ void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonW
   j.Key("rejected_by_fidelity").Integer(d.RejectedByFidelity);
   j.Key("frozen_vertices").Integer(d.FrozenVertices);
   j.Key("vertices_relocated").Integer(d.Relocations);
+  j.Key("blocks").Integer(d.Blocks);
+  j.Key("largest_block_cells").Integer(d.LargestBlockCells);
+  j.Key("assembled_cells").Integer(d.AssembledCells);
   j.EndObject();
 }
 

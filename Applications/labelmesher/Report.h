@@ -39,13 +39,15 @@ struct TopologyEntry
   bool Matches = false;
 };
 
-/// What vtkMeshDecimator did (its field data).
+/// What the decimation did (vtkLabelMesher's or vtkMeshDecimator's field data).
 struct DecimationEntry
 {
   double AngleBound = 0.0; ///< degrees
   long long CellsBefore = 0, CellsAfter = 0, Merges = 0, Offers = 0;
   long long RejectedByQuality = 0, RejectedByTopology = 0, RejectedByFidelity = 0, FrozenVertices = 0;
   long long Relocations = 0; ///< interior vertices moved between rounds of merges
+  /// Streamed (vtkLabelMesher): blocks, initial cells of the largest, cells entering the last pass.
+  long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0;
 };
 
 struct RunReport

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The README's Python pipeline, run as a test (Testing/Examples): a label image
-(.vti) through the wrapped mesher and decimator into a .vtu. The block between
+(.vti) through the wrapped vtkLabelMesher (mesher and decimator) into a .vtu. The block between
 the README markers is what the README shows (check_examples.py compares them).
 
 usage: PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 mesh_label_image.py LABELS.vti MESH.vtu
@@ -15,16 +15,11 @@ import labelmesher
 
 reader = vtkXMLImageDataReader()
 reader.SetFileName(sys.argv[1])
-mesher = labelmesher.vtkLabelOctreeMesher()
+mesher = labelmesher.vtkLabelMesher()              # mesher and decimator, block by block
 mesher.SetInputConnection(reader.GetOutputPort())
 mesher.SetMeshToImageDistance(1.0)
-mesher.SetIncludeBackground(True)                 # the decimator needs the whole box
-mesher.SetMeasureOutput(False)                    # the decimator measures its own output
-decimator = labelmesher.vtkMeshDecimator()
-decimator.SetInputConnection(0, mesher.GetOutputPort(0))
-decimator.SetInputConnection(1, reader.GetOutputPort())
-decimator.Update()
-mesh = decimator.GetOutput()                      # vtkUnstructuredGrid
+mesher.Update()
+mesh = mesher.GetOutput()                         # vtkUnstructuredGrid
 field = mesh.GetFieldData()
 print(field.GetArray("CellsBefore").GetValue(0), "->", field.GetArray("CellsAfter").GetValue(0))
 print(field.GetArray("MinimumAngle").GetValue(0))  # measured, >= 15

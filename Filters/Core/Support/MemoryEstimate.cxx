@@ -22,6 +22,10 @@ constexpr double kHeldBytesPerCell = 50.0; ///< VTK's grid: 4 + 1 ids, a type, a
 constexpr double kDecimatorBytesPerCell = 91.0;
 constexpr double kBytesPerVoxel = 3.1;
 constexpr double kFixedBytes = 25.0 * 1024 * 1024;
+/// Streamed: the last pass per initial cell (its assembled mesh is a fraction
+/// of the initial one), and the image boundary held for the whole run.
+constexpr double kStreamedBytesPerInitialCell = 30.0;
+constexpr double kImageBoundaryBytesPerFace = 64.0;
 } // namespace
 
 std::uint64_t CountInterfaceFaces(const LabelImage& image)
@@ -56,6 +60,20 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate)
   const double decimator = decimate ? (kHeldBytesPerCell + kDecimatorBytesPerCell) * cells : 0.0;
   e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
     std::max(mesher, decimator));
+  return e;
+}
+
+MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blockCells)
+{
+  // One block in flight (filled, then decimated), and the assembled mesh of
+  // the last pass, a fraction of the initial one.
+  MemoryEstimate e = EstimateMemory(image, false);
+  const double cells = static_cast<double>(e.InitialCells);
+  const double block = blockCells == 0 ? cells : std::min(cells, static_cast<double>(blockCells));
+  const double inFlight = (kMesherBytesPerCell + kDecimatorBytesPerCell) * block;
+  const double assembled = kStreamedBytesPerInitialCell * cells;
+  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
+    std::max(inFlight, assembled) + kImageBoundaryBytesPerFace * static_cast<double>(e.InterfaceFaces));
   return e;
 }
 

@@ -39,6 +39,9 @@ std::uint64_t CountInterfaceFaces(const LabelImage& image);
 /// as read -> mesh -> decimate -> write runs it in one process.
 MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate);
 
+/// The memory of meshing and decimating `image` block by block
+/// (Streaming/StreamedPipeline.h), blocks of `blockCells` initial cells (0: one block).
+MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blockCells);
 /// The memory of decimating a mesh of `cells` cells (the decimator alone, its
 /// input already held).
 std::uint64_t EstimateDecimationMemory(std::uint64_t cells);

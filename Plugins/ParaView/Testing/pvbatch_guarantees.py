@@ -81,6 +81,13 @@ decimated = check_linear(decimator, 15.0, "Mesh Decimator")
 initial = servermanager.Fetch(mesher)
 assert decimated.GetNumberOfCells() < initial.GetNumberOfCells(), "the decimator removed nothing"
 
+# Mesher and decimator in one filter, in blocks small enough that the image crosses borders.
+streamed = LabelMesher(Input=image)
+streamed.MinimumAngle = 15.0
+streamed.BlockCells = 5000
+streamed_mesh = check_linear(streamed, 15.0, "Label Mesher (streamed)")
+assert field(streamed_mesh, "Blocks")[0] > 1, "the image fit in one block: the test crosses no border"
+
 if dimension == 2:
     curver = BezierCurver(Input=decimator, Image=image)
     curver.UpdatePipeline()

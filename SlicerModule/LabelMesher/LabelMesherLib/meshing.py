@@ -210,9 +210,9 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
                 parameters: MeshingParameters = None, selected: Optional[Sequence[int]] = None,
                 progress: Optional[Callable[[float, str], None]] = None,
                 should_abort: Optional[Callable[[], bool]] = None) -> MeshingResult:
-    """Meshes a label array placed by ijk_to_ras: vtkLabelOctreeMesher, then
-    (parameters.decimate) vtkMeshDecimator, then (parameters.curve, one slice)
-    vtkBezierCurver; returns the mesh in RAS and its report. Raises MeshingError
+    """Meshes a label array placed by ijk_to_ras: vtkLabelMesher (mesher and decimator, block
+    by block), or vtkLabelOctreeMesher alone (not parameters.decimate), then (parameters.curve,
+    one slice) vtkBezierCurver; returns the mesh in RAS and its report. Raises MeshingError
     (bad input, a filter's error, an untangling failure) or MeshingCancelled."""
     parameters = parameters or MeshingParameters()
     placement = placement_from_ijk_to_ras(ijk_to_ras)
@@ -222,29 +222,21 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     parameters.validate(dimension)
 
     errors: List[str] = []
-    mesher = labelmesher.vtkLabelOctreeMesher()
+    if parameters.decimate:
+        # Mesher and decimator in one filter, block by block: the initial mesh is never whole.
+        mesher = labelmesher.vtkLabelMesher()
+        mesher.SetMinimumAngle(parameters.minimum_angle)
+    else:
+        mesher = labelmesher.vtkLabelOctreeMesher()
     mesher.SetInputData(image)
     mesher.SetImageToMeshDistance(parameters.image_to_mesh_distance)
     mesher.SetMeshToImageDistance(parameters.mesh_to_image_distance)
-    # The decimator needs the background cells (the mesh must fill its box); it drops them itself.
-    mesher.SetIncludeBackground(parameters.include_background or parameters.decimate)
-    mesher.SetMeasureOutput(not parameters.decimate)
-    # Refuse, before meshing, a run whose decimation would not fit in memory.
-    mesher.SetCheckMemoryForDecimation(parameters.decimate)
-    starts = _stage_starts(parameters)
-    _watch(mesher, starts[0], starts[1] - starts[0], progress, should_abort, errors)
+    mesher.SetIncludeBackground(parameters.include_background)
+    mesher.SetMeasureOutput(True)
+    curve_start = _curve_start(parameters)
+    _watch(mesher, 0.0, curve_start, progress, should_abort, errors)
     _update(mesher, errors, should_abort)
     last = mesher
-    if parameters.decimate:
-        decimator = labelmesher.vtkMeshDecimator()
-        decimator.SetInputConnection(0, mesher.GetOutputPort(0))
-        decimator.SetInputData(1, image)
-        decimator.SetMinimumAngle(parameters.minimum_angle)
-        decimator.SetIncludeBackground(parameters.include_background)
-        decimator.SetMeasureOutput(True)
-        _watch(decimator, starts[1], starts[2] - starts[1], progress, should_abort, errors)
-        _update(decimator, errors, should_abort)
-        last = decimator
     curver = None
     if parameters.curve:
         # The curver keeps the bounds the linear mesh records and measures the curves itself.
@@ -253,7 +245,7 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
         curver.SetInputData(1, image)
         curver.SetSmoothness(parameters.smoothness)
         curver.SetTension(parameters.tension)
-        _watch(curver, starts[2], 1.0 - starts[2], progress, should_abort, errors)
+        _watch(curver, curve_start, 1.0 - curve_start, progress, should_abort, errors)
         _update(curver, errors, should_abort)
 
     linear = vtkUnstructuredGrid()
@@ -279,12 +271,12 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     return MeshingResult(mesh=mesh, interfaces=interfaces, report=report)
 
 
-def _stage_starts(parameters: MeshingParameters):
-    """Where the mesher's, the decimator's and the curver's progress start in the run's
-    (their rough weights on real images, over the stages run)."""
-    weights = [1.0, 1.0 if parameters.decimate else 0.0, 0.5 if parameters.curve else 0.0]
-    total = sum(weights)
-    return [sum(weights[:s]) / total for s in range(3)]
+def _curve_start(parameters: MeshingParameters):
+    """Where the curver's progress starts in the run's: the rough weights on real images of
+    meshing (1), meshing and decimating (2) and curving (0.5), over the stages run."""
+    meshing = 2.0 if parameters.decimate else 1.0
+    curving = 0.5 if parameters.curve else 0.0
+    return meshing / (meshing + curving)
 
 
 def _field(mesh, name, tuple_index=0):

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The VTK adapter vtkLabelMesher (Filters/vtkLabelMesher.h), mesher and
+// decimator streamed block by block, as a pipeline uses it: ports, the cells
+// and their arrays, the field data (parameters, counts, streaming figures,
+// measured guarantees), the physical placement, one block equal to
+// vtkLabelOctreeMesher + vtkMeshDecimator, many blocks keeping the measured
+// guarantees, one error and an empty output for bad input, and abort. The
+// core has its own tests (TestStreamedPipeline.cxx).
+
+#include "FilterTestSupport.h"
+
+#include "LabelMesherArrayNames.h"
+#include "vtkLabelMesher.h"
+#include "vtkLabelOctreeMesher.h"
+#include "vtkMeshDecimator.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellTypes.h"
+#include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace arrays = labelmesher::arrays;
+using namespace labelmesher::testing;
+
+namespace
+{
+/// Two balls of labels 1 and 2 side by side in an n^3 volume, so that blocks
+/// cut interfaces of both.
+std::vector<int> TwoBalls(int n)
+{
+  std::vector<int> labels = MakeBallLabels(n, n / 3.2);
+  const double c[3] = { n * 0.72, n * 0.55, n * 0.4 };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if ((i - c[0]) * (i - c[0]) + (j - c[1]) * (j - c[1]) + (k - c[2]) * (k - c[2]) <= n * n / 25.0)
+          labels[(static_cast<std::size_t>(k) * n + j) * n + i] = 2;
+  return labels;
+}
+
+bool SameGrid(vtkUnstructuredGrid* a, vtkUnstructuredGrid* b)
+{
+  if (a->GetNumberOfCells() != b->GetNumberOfCells() || a->GetNumberOfPoints() != b->GetNumberOfPoints())
+    return false;
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    double x[3], y[3];
+    a->GetPoint(p, x);
+    b->GetPoint(p, y);
+    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2])
+      return false;
+  }
+  vtkIdType na = 0, nb = 0;
+  const vtkIdType *pa = nullptr, *pb = nullptr;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCells()->GetCellAtId(c, na, pa);
+    b->GetCells()->GetCellAtId(c, nb, pb);
+    if (na != nb || !std::equal(pa, pa + na, pb))
+      return false;
+  }
+  return true;
+}
+} // namespace
+
+TEST(vtkLabelMesher, MeshesAndDecimatesWithItsArraysAndFieldData)
+{
+  auto image = MakeVtkImage(TwoBalls(24), { 0.5, 0.5, 0.5 }, { 10, -4, 2 });
+  image->SetDirectionMatrix(0, 1, 0, 1, 0, 0, 0, 0, 1); // a reflection
+  vtkNew<vtkLabelMesher> mesher;
+  EXPECT_EQ(mesher->GetNumberOfInputPorts(), 1);
+  EXPECT_EQ(mesher->GetNumberOfOutputPorts(), 2);
+  EXPECT_STREQ(mesher->GetInputPortInformation(0)->Get(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE()), "vtkImageData");
+  mesher->SetInputData(image);
+  mesher->SetImageToMeshDistance(1.5);
+  mesher->SetMinimumAngle(12.0);
+  mesher->SetBlockCells(3000);
+  MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+  mesher->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
+
+  vtkUnstructuredGrid* out = mesher->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  vtkNew<vtkCellTypes> types;
+  out->GetCellTypes(types);
+  ASSERT_EQ(types->GetNumberOfTypes(), 1);
+  EXPECT_EQ(types->GetCellType(0), VTK_TETRA);
+  double range[2];
+  out->GetCellData()->GetScalars()->GetRange(range);
+  EXPECT_EQ(range[0], 1.0) << "background dropped by default";
+  EXPECT_EQ(range[1], 2.0);
+  EXPECT_EQ(CountNonPositiveTetrahedra(out), 0);
+  EXPECT_EQ(CountUnusedPoints(out), 0);
+  EXPECT_EQ(CountUnusedPoints(mesher->GetBoundaryOutput()), 0);
+  EXPECT_GT(mesher->GetBoundaryOutput()->GetNumberOfPolys(), 0);
+
+  EXPECT_GE(FieldScalar(out, arrays::Blocks), 3.0) << "the image crosses block borders";
+  EXPECT_LE(FieldScalar(out, arrays::LargestBlockCells), 3000.0 + 200.0) << "a block closes once it holds 3000 cells";
+  EXPECT_GT(FieldScalar(out, arrays::AssembledCells), 0.0);
+  EXPECT_GT(FieldScalar(out, arrays::NumberOfLeaves), 0.0);
+  EXPECT_GT(FieldScalar(out, arrays::InterfaceFaces), 0.0);
+  EXPECT_GT(FieldScalar(out, arrays::EstimatedMemory), 0.0);
+  EXPECT_EQ(FieldScalar(out, arrays::AngleBound), 12.0);
+  EXPECT_EQ(FieldScalar(out, arrays::ImageToMeshDistance), 1.5);
+  EXPECT_EQ(FieldScalar(out, arrays::MeshToImageDistance), 2.0);
+  EXPECT_EQ(FieldScalar(out, arrays::VoxelSize), 0.5);
+  EXPECT_EQ(FieldScalar(out, arrays::CellsAfter), out->GetNumberOfCells());
+  EXPECT_LT(FieldScalar(out, arrays::CellsAfter) * 3, FieldScalar(out, arrays::CellsBefore));
+  // The measured guarantees, by the independent checks.
+  EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 12.0 - 1e-9);
+  EXPECT_EQ(FieldScalar(out, arrays::InvertedCells), 0.0);
+  EXPECT_EQ(FieldScalar(out, arrays::OverSharedFaces), 0.0);
+  EXPECT_EQ(FieldScalar(out, arrays::HangingVertices), 0.0);
+  EXPECT_EQ(FieldScalar(out, arrays::HausdorffBoundsCertified), 1.0);
+  EXPECT_LE(FieldScalar(out, arrays::MeasuredImageToMeshDistance), 1.5 + 1e-9);
+  EXPECT_LE(FieldScalar(out, arrays::MeasuredMeshToImageDistance), 2.0 + 1e-9);
+  vtkDataArray* matches = out->GetFieldData()->GetArray(arrays::TopologyMatches);
+  ASSERT_NE(matches, nullptr);
+  for (vtkIdType t = 0; t < matches->GetNumberOfTuples(); ++t)
+    EXPECT_EQ(matches->GetComponent(t, 0), 1.0) << "material " << t;
+}
+
+TEST(vtkLabelMesher, OneBlockIsTheMesherFollowedByTheDecimator)
+{
+  auto image = MakeVtkImage(TwoBalls(20), { 0.7, 0.7, 0.7 }, { 1, 2, 3 });
+  vtkNew<vtkLabelMesher> streamed;
+  streamed->SetInputData(image);
+  streamed->SetBlockCells(0);
+  streamed->MeasureOutputOff();
+  streamed->Update();
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->IncludeBackgroundOn();
+  mesher->MeasureOutputOff();
+  vtkNew<vtkMeshDecimator> decimator;
+  decimator->SetInputConnection(0, mesher->GetOutputPort(0));
+  decimator->SetInputDataObject(1, image);
+  decimator->MeasureOutputOff();
+  decimator->Update();
+  EXPECT_EQ(FieldScalar(streamed->GetOutput(), arrays::Blocks), 1.0);
+  EXPECT_TRUE(SameGrid(streamed->GetOutput(), decimator->GetOutput()));
+  EXPECT_EQ(FieldScalar(streamed->GetOutput(), arrays::CellsBefore), FieldScalar(decimator->GetOutput(), arrays::CellsBefore));
+}
+
+TEST(vtkLabelMesher, TwoDimensionalImageGivesTrianglesInItsPlane)
+{
+  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->SetMinimumAngle(30.0);
+  mesher->SetBlockCells(200);
+  mesher->Update();
+  vtkUnstructuredGrid* out = mesher->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  EXPECT_EQ(out->GetCellType(0), VTK_TRIANGLE);
+  EXPECT_GE(FieldScalar(out, arrays::Blocks), 2.0);
+  EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 30.0 - 1e-9);
+  EXPECT_EQ(FieldScalar(out, arrays::HausdorffBoundsCertified), 1.0);
+}
+
+TEST(vtkLabelMesher, BadInputIsOneErrorAndAnEmptyOutput)
+{
+  struct Case
+  {
+    const char* Name;
+    std::function<void(vtkLabelMesher*)> Spoil;
+    const char* Expected;
+  };
+  const std::vector<Case> cases = {
+    { "angle above the proven bound", [](vtkLabelMesher* m) { m->SetMinimumAngle(35.0); }, "minimum angle" },
+    { "memory limit", [](vtkLabelMesher* m) { m->SetMemoryLimit(1.0); }, "memory limit of 1 MiB" },
+    { "no foreground", [](vtkLabelMesher* m) { m->SetInputData(MakeVtkImage(std::vector<int>(8 * 8 * 8, 0))); },
+      "no foreground" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkLabelMesher> mesher;
+    mesher->SetInputData(MakeVtkImage(MakeBallLabels(12, 4.0)));
+    c.Spoil(mesher);
+    MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+    mesher->Update();
+    EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0) << c.Name;
+    ASSERT_EQ(errors.Messages.size(), 1u) << c.Name;
+    EXPECT_NE(errors.Messages[0].find(c.Expected), std::string::npos) << c.Name << ": " << errors.Messages[0];
+  }
+}
+
+TEST(vtkLabelMesher, AbortStopsTheRunWithAnEmptyOutputAndAWarning)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage(TwoBalls(24)));
+  mesher->SetBlockCells(3000);
+  AbortAtStage abort(mesher, "decimation");
+  MessageRecorder warnings(mesher, vtkCommand::WarningEvent);
+  mesher->Update();
+  EXPECT_TRUE(abort.Reached);
+  EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+  ASSERT_EQ(warnings.Messages.size(), 1u);
+  EXPECT_NE(warnings.Messages[0].find("aborted"), std::string::npos);
+}

@@ -17,7 +17,11 @@ guarantee from the JSON report (which the measuring component fills in):
   in 3D) in the same run, each read back by meshio / gmsh / VTK and compared
   with the .vtu (Testing/Support/export_checks.py).
 
-usage: check_real_data.py LABELMESHER INPUT WORKDIR [--no-decimate]
+- with --block-cells N: decimated block by block in blocks of N initial cells,
+  which must cut the image into more than one block (the guarantees above hold
+  across the block borders).
+
+usage: check_real_data.py LABELMESHER INPUT WORKDIR [--no-decimate | --block-cells N]
 """
 import json
 import os
@@ -36,8 +40,10 @@ BOUND = 2.0
 def main():
     labelmesher, image, workdir = sys.argv[1:4]
     decimate = "--no-decimate" not in sys.argv[4:]
+    blocks = sys.argv[sys.argv.index("--block-cells") + 1] if "--block-cells" in sys.argv else None
     os.makedirs(workdir, exist_ok=True)
-    name = os.path.splitext(os.path.basename(image))[0] + ("" if decimate else "_initial")
+    name = os.path.splitext(os.path.basename(image))[0] + ("" if decimate else "_initial") + \
+        ("_blocks" + blocks if blocks else "")
     mesh = os.path.join(workdir, name + ".vtu")
     report_path = os.path.join(workdir, name + ".json")
     exports = {}
@@ -45,7 +51,8 @@ def main():
         formats = [".msh", ".inp", ".mesh", ".vtp", ".obj"] + ([] if image.endswith(".png") else [".stl"])
         exports = {f: os.path.join(workdir, name + f) for f in formats}
     command = [labelmesher, "mesh", image, "-o", mesh, "--report", report_path,
-               "--hausdorff", str(BOUND), "--include-background"] + ([] if decimate else ["--no-decimate"])
+               "--hausdorff", str(BOUND), "--include-background"] + ([] if decimate else ["--no-decimate"]) + \
+        (["--block-cells", blocks] if blocks else [])
     for path in exports.values():
         command += ["-o", path]
     run = subprocess.run(command, capture_output=True, text=True)
@@ -70,6 +77,8 @@ def main():
             failures.append("the report says the mesh was not decimated")
         elif decimation["cells_after"] * 2 > decimation["cells_before"]:
             failures.append("decimated only from %d to %d cells" % (decimation["cells_before"], decimation["cells_after"]))
+        if blocks and not (decimation and decimation["blocks"] > 1):
+            failures.append("--block-cells %s left the image in one block: no border was crossed" % blocks)
     elif report["decimation"] is not None:
         failures.append("--no-decimate, yet the report describes a decimation")
     if abs(quality["angle_bound_degrees"] - bound) > 1e-9:

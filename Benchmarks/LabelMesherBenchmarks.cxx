@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // LabelMesherBenchmarks: per-stage figures of MeshLabelImage (h(I,M) = h(M,I) = 2
-// voxels) and of DecimateMesh (the same bounds, 15 degrees) on the Cassini volumes
+// voxels), of DecimateMesh (the same bounds, 15 degrees) and of MeshAndDecimate
+// (both, block by block: MeshAndDecimate/Cassini/N, up to 800) on the Cassini volumes
 // of dissertation section 5.1.1 (100..400 voxels a side), on the shared real label
 // volumes and on a batch of random property-test images. See Benchmarks/README.md
 // for what each counter means.
@@ -8,6 +9,7 @@
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
+#include "Streaming/StreamedPipeline.h"
 #include "SyntheticShapes.h"
 #include "LabelImageFile.h"
 
@@ -177,6 +179,59 @@ void DecimateAndReport(benchmark::State& state, const LabelImage& image)
   state.counters["peak_rss_MiB"] = PeakRssMiB();
 }
 
+/// Times MeshAndDecimate (mesher and decimator block by block, h = 2, 15 degrees,
+/// blocks of `blockCells`) on `image` and reports the counters: what enters and
+/// leaves, the blocks, and the peak memory over what the process held with the
+/// image (growth_MiB), which is what must follow the output, not the initial mesh.
+void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size_t blockCells)
+{
+  DecimationParameters decimation;
+  decimation.ImageToMeshDistance = decimation.MeshToImageDistance = 2.0;
+  decimation.MinimumAngle = 15.0;
+  StreamingParameters streaming;
+  streaming.BlockCells = blockCells;
+  ResetPeakRss();
+  const double rssBefore = RssMiB();
+  double total = 0.0;
+  benchmarks::StageTotals stages;
+  StreamedResult last;
+  std::int64_t iterations = 0;
+  try
+  {
+    for (auto _ : state)
+    {
+      const auto start = Clock::now();
+      StreamedResult result = MeshAndDecimate(image, H2(), decimation, streaming);
+      total += std::chrono::duration<double>(Clock::now() - start).count();
+      stages.Add(result.Decimated.Timings);
+      last.Decimated.Counts = result.Decimated.Counts;
+      last.Streaming = result.Streaming;
+      ++iterations;
+      benchmark::DoNotOptimize(result.Decimated.Mesh.Points.data());
+    }
+  }
+  catch (const std::exception& e)
+  {
+    state.SkipWithError(e.what());
+    return;
+  }
+  if (iterations == 0)
+    return;
+  const double seconds = total / iterations;
+  const DecimationCounts& counts = last.Decimated.Counts;
+  state.counters["voxels"] = double(image.NumberOfVoxels());
+  state.counters["cells_in"] = double(counts.CellsBefore);
+  state.counters["blocks"] = double(last.Streaming.Blocks);
+  state.counters["assembled"] = double(last.Streaming.AssembledCells);
+  state.counters["cells_out"] = double(counts.CellsAfter);
+  state.counters["cells/s"] = double(counts.CellsBefore) / seconds;
+  for (const auto& stage : stages.Order)
+    state.counters[CounterName(stage)] = stages.Seconds[stage] / iterations;
+  state.counters["rss_before_MiB"] = rssBefore;
+  state.counters["peak_rss_MiB"] = PeakRssMiB();
+  state.counters["growth_MiB"] = PeakRssMiB() - rssBefore;
+}
+
 /// Meshes `count` random property-test images per iteration (seeds 0..count-1).
 void BenchmarkRandomImages(benchmark::State& state, int dimension, int count)
 {
@@ -240,6 +295,14 @@ void RegisterAll()
       ->Iterations(1)
       ->UseRealTime();
   }
+
+  // The memory-growth table (Benchmarks/README.md, "Memory"): block by block, default blocks.
+  for (int n : { 100, 200, 400, 800 })
+    benchmark::RegisterBenchmark(("MeshAndDecimate/Cassini/" + std::to_string(n)).c_str(),
+      [n](benchmark::State& state) { StreamAndReport(state, testing::MakeCassiniVolume(n), kDefaultBlockCells); })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
 
   for (int n : { 100, 200, 300, 400 })
     benchmark::RegisterBenchmark(("DecimateMesh/Cassini/" + std::to_string(n)).c_str(),

@@ -70,6 +70,24 @@ TEST(MemoryEstimate, GrowsWithTheBoundaryAndCountsDecimation)
   EXPECT_GT(EstimateDecimationMemory(2000000), EstimateDecimationMemory(1000000));
 }
 
+TEST(MemoryEstimate, StreamedRunsNeedLessWithSmallerBlocks)
+{
+  LabelImage checkerboard(48, 48, 48);
+  for (int k = 0; k < 48; ++k)
+    for (int j = 0; j < 48; ++j)
+      for (int i = 0; i < 48; ++i)
+        checkerboard(i, j, k) = 1 + (i + j + k) % 2;
+  const MemoryEstimate whole = EstimateStreamedMemory(checkerboard, 0);
+  const MemoryEstimate blocks = EstimateStreamedMemory(checkerboard, 50000);
+  ASSERT_GT(whole.InitialCells, 500000u) << "the image must span several blocks";
+  EXPECT_EQ(whole.InterfaceFaces, blocks.InterfaceFaces);
+  EXPECT_LT(blocks.RunBytes, whole.RunBytes);
+  // One block that holds the whole mesh is the same as no blocks; either
+  // needs less than mesher and decimator apart (no VTK grid of the initial mesh).
+  EXPECT_EQ(EstimateStreamedMemory(checkerboard, whole.InitialCells + 1).RunBytes, whole.RunBytes);
+  EXPECT_LT(whole.RunBytes, EstimateMemory(checkerboard, true).RunBytes);
+}
+
 TEST(MemoryEstimate, LibscAllocationFailureThrowsInsteadOfAborting)
 {
 #if defined(__SANITIZE_ADDRESS__)

@@ -22,10 +22,16 @@ constexpr double kHeldBytesPerCell = 50.0; ///< VTK's grid: 4 + 1 ids, a type, a
 constexpr double kDecimatorBytesPerCell = 91.0;
 constexpr double kBytesPerVoxel = 3.1;
 constexpr double kFixedBytes = 25.0 * 1024 * 1024;
-/// Streamed: the last pass per initial cell (its assembled mesh is a fraction
-/// of the initial one), and the image boundary held for the whole run.
-constexpr double kStreamedBytesPerInitialCell = 30.0;
-constexpr double kImageBoundaryBytesPerFace = 64.0;
+/// Streamed (Streaming/StreamedPipeline.h; Benchmarks/README.md, "Memory"):
+/// a block filled and decimated in place, per initial cell; the output held
+/// while blocks go on and the last pass, per cell entering that pass; the share
+/// of the initial cells that enter it (0.13-0.18 measured at 1M-cell blocks);
+/// the image boundary, its certificates' neighbourhoods and flags, per face.
+constexpr double kBlockBytesPerCell = 66.0;
+constexpr double kOutputBytesPerCell = 40.0;
+constexpr double kLastPassBytesPerCell = 120.0;
+constexpr double kLastPassShare = 0.18;
+constexpr double kStreamedBytesPerFace = 64.0;
 } // namespace
 
 std::uint64_t CountInterfaceFaces(const LabelImage& image)
@@ -65,15 +71,18 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate)
 
 MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blockCells)
 {
-  // One block in flight (filled, then decimated), and the assembled mesh of
-  // the last pass, a fraction of the initial one.
+  // One block in flight (filled, then decimated in place) beside the output
+  // so far; with several blocks, the last pass over the assembled mesh, a
+  // share of the initial one, is the peak.
   MemoryEstimate e = EstimateMemory(image, false);
   const double cells = static_cast<double>(e.InitialCells);
-  const double block = blockCells == 0 ? cells : std::min(cells, static_cast<double>(blockCells));
-  const double inFlight = (kMesherBytesPerCell + kDecimatorBytesPerCell) * block;
-  const double assembled = kStreamedBytesPerInitialCell * cells;
+  const bool oneBlock = blockCells == 0 || cells <= static_cast<double>(blockCells);
+  const double block = oneBlock ? cells : static_cast<double>(blockCells);
+  const double assembled = oneBlock ? 0.0 : kLastPassShare * cells;
+  const double run = std::max(kBlockBytesPerCell * block + kOutputBytesPerCell * assembled,
+    kLastPassBytesPerCell * assembled);
   e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
-    std::max(inFlight, assembled) + kImageBoundaryBytesPerFace * static_cast<double>(e.InterfaceFaces));
+    kStreamedBytesPerFace * static_cast<double>(e.InterfaceFaces) + run);
   return e;
 }
 

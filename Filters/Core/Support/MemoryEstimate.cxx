@@ -29,7 +29,7 @@ constexpr double kFixedBytes = 25.0 * 1024 * 1024;
 /// the image boundary, its certificates' neighbourhoods and flags, per face.
 constexpr double kBlockBytesPerCell = 66.0;
 constexpr double kOutputBytesPerCell = 40.0;
-constexpr double kLastPassBytesPerCell = 120.0;
+constexpr double kLastPassBytesPerCell = 140.0;
 constexpr double kLastPassShare = 0.18;
 constexpr double kStreamedBytesPerFace = 64.0;
 } // namespace

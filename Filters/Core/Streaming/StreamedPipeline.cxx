@@ -260,7 +260,8 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       BoxBinsByVoxel around(near);
       for (std::size_t f = 0; f < near.size(); ++f)
       {
-        settled[f] = selected[f] && !uncertified[f];
+        if (selected[f])
+          settled[f] = !uncertified[f];
         if (uncertified[f] && streaming.FreezeNearBorders)
           around.Add(static_cast<std::uint32_t>(f));
       }

@@ -195,6 +195,7 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
   double total = 0.0;
   benchmarks::StageTotals stages;
   StreamedResult last;
+  std::size_t foregroundAfter = 0;
   std::int64_t iterations = 0;
   try
   {
@@ -206,6 +207,7 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
       stages.Add(result.Decimated.Timings);
       last.Decimated.Counts = result.Decimated.Counts;
       last.Streaming = result.Streaming;
+      foregroundAfter = benchmarks::ForegroundCells(result.Decimated.Mesh);
       ++iterations;
       benchmark::DoNotOptimize(result.Decimated.Mesh.Points.data());
     }
@@ -224,6 +226,7 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
   state.counters["blocks"] = double(last.Streaming.Blocks);
   state.counters["assembled"] = double(last.Streaming.AssembledCells);
   state.counters["cells_out"] = double(counts.CellsAfter);
+  state.counters["fg_out"] = double(foregroundAfter);
   state.counters["cells/s"] = double(counts.CellsBefore) / seconds;
   for (const auto& stage : stages.Order)
     state.counters[CounterName(stage)] = stages.Seconds[stage] / iterations;

@@ -35,13 +35,12 @@ struct DecimationScope
   /// (these, the border's, the certificates' and FreezeNear's).
   std::vector<std::uint8_t> Frozen;
   /// With ImageFaces: called once the certificates are made, before any
-  /// merge, with the mesh's interface faces and the image faces (per
-  /// ImageBoundary face) of which some side found no certificate in this
-  /// mesh; it must freeze (set in `frozen`) at least the vertices of every
+  /// merge, with the image faces (per ImageBoundary face) of which some side
+  /// found no certificate in this mesh; it must freeze (set in `frozen`) at least the vertices of every
   /// interface face of their sides within h(I,M) of them. Null: such a face is an error, the
   /// input breaks h(I,M).
-  std::function<void(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces,
-    const std::vector<std::uint8_t>& uncertified, std::vector<std::uint8_t>& frozen)>
+  std::function<void(const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
+    std::vector<std::uint8_t>& frozen)>
     FreezeNear;
   /// Per mesh vertex: offered in the first pass (relocation then tries every
   /// vertex, and re-offers what it moves); empty: every vertex.

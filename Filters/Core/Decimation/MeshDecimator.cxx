@@ -404,7 +404,7 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
     {
       std::vector<std::uint8_t> uncertified(boundary.Faces().size(), 0);
       anchors.Initialize(mesh, faces, frozen, scope.ImageFaces, &uncertified);
-      scope.FreezeNear(mesh, faces, uncertified, frozen);
+      scope.FreezeNear(mesh, uncertified, frozen);
     }
     else
       anchors.Initialize(mesh, faces, frozen, scope.ImageFaces);

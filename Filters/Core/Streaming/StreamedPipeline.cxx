@@ -255,8 +255,8 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       std::count_if(filled.Materials.begin(), filled.Materials.end(), [](std::int32_t m) { return m != 0; }));
     DecimationScope scope;
     scope.ImageFaces = &selected;
-    scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<InterfaceFace>&,
-                         const std::vector<std::uint8_t>& uncertified, std::vector<std::uint8_t>& frozen) {
+    scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
+                         std::vector<std::uint8_t>& frozen) {
       BoxBinsByVoxel around(near);
       for (std::size_t f = 0; f < near.size(); ++f)
       {
@@ -297,8 +297,6 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       return result;
     }
     // scope.Frozen now holds every vertex the block froze, its border's included.
-    result.Streaming.BorderFrozenVertices +=
-      static_cast<std::size_t>(std::count(scope.Frozen.begin(), scope.Frozen.end(), std::uint8_t(1)));
     assembly.Add(block, scope.Frozen);
     first = last;
   }

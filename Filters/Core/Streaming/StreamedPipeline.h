@@ -62,9 +62,6 @@ struct StreamingCounts
   std::size_t LargestBlockCells = 0;  ///< initial cells of the largest block
   std::size_t ForegroundCellsBefore = 0; ///< initial cells of a label other than 0
   std::size_t AssembledCells = 0;     ///< cells entering the last pass (0: one block, no last pass)
-  /// Vertices the blocks froze (borders, cells near image faces no block could
-  /// certify yet, pinned certificates), summed over the blocks.
-  std::size_t BorderFrozenVertices = 0;
   std::size_t MergesInBlocks = 0;     ///< merges done in the blocks (the rest: in the last pass)
 };
 

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // LabelMesherBenchmarks: per-stage figures of MeshLabelImage (h(I,M) = h(M,I) = 2
 // voxels), of DecimateMesh (the same bounds, 15 degrees) and of MeshAndDecimate
-// (both, block by block: MeshAndDecimate/Cassini/N, up to 800) on the Cassini volumes
+// (both, block by block: MeshAndDecimate/Cassini/N, up to 800, and at 1024 with every
+// guarantee measured: MeshAndDecimateChecked/Cassini/1024) on the Cassini volumes
 // of dissertation section 5.1.1 (100..400 voxels a side), on the shared real label
 // volumes and on a batch of random property-test images. See Benchmarks/README.md
 // for what each counter means.
 #include "BenchmarkSupport.h"
+#include "Checks/MeshChecks.h"
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
@@ -183,7 +185,56 @@ void DecimateAndReport(benchmark::State& state, const LabelImage& image)
 /// blocks of `blockCells`) on `image` and reports the counters: what enters and
 /// leaves, the blocks, and the peak memory over what the process held with the
 /// image (growth_MiB), which is what must follow the output, not the initial mesh.
-void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size_t blockCells)
+/// The guarantees of `mesh` (decimated from `image` with `decimation`),
+/// measured whole and timed, as counters; `violations` counts the broken ones.
+void CheckGuarantees(benchmark::State& state, const LabelImage& image, const SimplexMesh& mesh,
+  const DecimationParameters& decimation)
+{
+  auto timed = [&](const char* name, auto&& measure) {
+    const auto start = Clock::now();
+    measure();
+    state.counters[std::string("s_check_") + name] = std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  int violations = 0;
+  timed("quality", [&] {
+    const QualityReport q = MeasureQuality(mesh);
+    state.counters["min_dihedral"] = q.MinimumAngle;
+    state.counters["inverted"] = double(q.InvertedCells);
+    violations += q.MinimumAngle < decimation.MinimumAngle - 1e-9 || q.InvertedCells > 0;
+  });
+  timed("conformity", [&] {
+    const ConformityReport c = MeasureConformity(mesh);
+    state.counters["conforming"] = c.Conforming();
+    violations += !c.Conforming();
+  });
+  timed("hausdorff", [&] {
+    const HausdorffReport h = MeasureHausdorff(image, mesh);
+    double im = h.Overall.ImageToMesh, mi = h.Overall.MeshToImage;
+    for (const auto& entry : h.PerMaterial)
+    {
+      im = std::max(im, entry.second.ImageToMesh);
+      mi = std::max(mi, entry.second.MeshToImage);
+    }
+    state.counters["hIM_max"] = im;
+    state.counters["hMI_max"] = mi;
+    // The measurement is an upper bound tight to 1/1024 voxel.
+    violations += im > decimation.ImageToMeshDistance + 1.0 / 512 || mi > decimation.MeshToImageDistance + 1.0 / 512;
+  });
+  timed("topology", [&] {
+    std::size_t mismatches = 0;
+    for (const auto& entry : CompareTopology(image, mesh))
+      mismatches += !entry.second.Matches();
+    state.counters["topology_mismatches"] = double(mismatches);
+    violations += mismatches > 0;
+  });
+  state.counters["violations"] = violations;
+}
+
+/// With `check`, the decimated mesh's guarantees are then measured on the
+/// whole mesh, independently of the decimator (MeshChecks.h), each timed:
+/// smallest and largest dihedral angle and inverted cells, conformity, both
+/// Hausdorff distances overall and per material, topology of every material.
+void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size_t blockCells, bool check = false)
 {
   DecimationParameters decimation;
   decimation.ImageToMeshDistance = decimation.MeshToImageDistance = 2.0;
@@ -210,6 +261,8 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
       foregroundAfter = benchmarks::ForegroundCells(result.Decimated.Mesh);
       ++iterations;
       benchmark::DoNotOptimize(result.Decimated.Mesh.Points.data());
+      if (check)
+        last.Decimated.Mesh = std::move(result.Decimated.Mesh);
     }
   }
   catch (const std::exception& e)
@@ -233,6 +286,8 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
   state.counters["rss_before_MiB"] = rssBefore;
   state.counters["peak_rss_MiB"] = PeakRssMiB();
   state.counters["growth_MiB"] = PeakRssMiB() - rssBefore;
+  if (check)
+    CheckGuarantees(state, image, last.Decimated.Mesh, decimation);
 }
 
 /// Meshes `count` random property-test images per iteration (seeds 0..count-1).
@@ -300,6 +355,15 @@ void RegisterAll()
   }
 
   // The memory-growth table (Benchmarks/README.md, "Memory"): block by block, default blocks.
+  // At scale (issue 32, item 4): 1024^3 voxels, then every guarantee measured on the whole mesh.
+  for (int n : { 400, 1024 })
+    benchmark::RegisterBenchmark(("MeshAndDecimateChecked/Cassini/" + std::to_string(n)).c_str(),
+      [n](benchmark::State& state) {
+        StreamAndReport(state, testing::MakeCassiniVolume(n), kDefaultBlockCells, true);
+      })
+      ->Unit(benchmark::kSecond)
+      ->Iterations(1)
+      ->UseRealTime();
   for (int n : { 100, 200, 400, 800 })
     benchmark::RegisterBenchmark(("MeshAndDecimate/Cassini/" + std::to_string(n)).c_str(),
       [n](benchmark::State& state) { StreamAndReport(state, testing::MakeCassiniVolume(n), kDefaultBlockCells); })

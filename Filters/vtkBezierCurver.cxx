@@ -14,6 +14,8 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -177,12 +179,11 @@ bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher:
 
 /// Pass 2: the optional image: its pixels as the core's LabelImage, the map
 /// from pixel indices to mesh coordinates, and the border (which stays straight).
-bool PlaceImage(vtkImageData* imageData, const PlaneAxes& plane, labelmesher::LabelImage& image,
+bool PlaceImage(vtkImageData* imageData, vtkDataArray* labels, const PlaneAxes& plane, labelmesher::LabelImage& image,
   std::array<double, 6>& pixelToMesh, labelmesher::CurvingParameters& parameters, std::string& error)
 {
   labelmesher::ImagePlacement placement;
-  vtkDataArray* scalars = imageData->GetPointData()->GetScalars();
-  if (!labelmesher::ConvertLabelImage(imageData, scalars, image, placement, error))
+  if (!labelmesher::ConvertLabelImage(imageData, labels, image, placement, error))
   {
     error += ".";
     return false;
@@ -310,6 +311,8 @@ void AddCurvedMeasurements(
 vtkBezierCurver::vtkBezierCurver()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
 
 //------------------------------------------------------------------------------
@@ -367,7 +370,8 @@ int vtkBezierCurver::RequestData(
   parameters.Untangling.QualityIterations = this->QualityIterations;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
-  if (imageData && !PlaceImage(imageData, plane, image, pixelToMesh, parameters, error))
+  if (imageData &&
+    !PlaceImage(imageData, this->GetInputArrayToProcess(0, inputVector), plane, image, pixelToMesh, parameters, error))
   {
     vtkErrorMacro(<< error);
     return 1;

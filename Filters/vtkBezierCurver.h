@@ -43,7 +43,9 @@
  * Input port 0: vtkUnstructuredGrid of VTK_TRIANGLE cells lying in one axis plane
  * (x-y, x-z or y-z; e.g. vtkLabelOctreeMesher's 2D output) with an integer cell
  * array `Material` (0 = background). Input port 1 (optional): the label image the
- * mesh came from (2D vtkImageData of integer labels, as for vtkLabelOctreeMesher);
+ * mesh came from (2D vtkImageData of integer labels, as for vtkLabelOctreeMesher:
+ * its point scalars, or the array selected with SetInputArrayToProcess(0, 1, 0,
+ * POINTS, name));
  * when given, its border box is the border whose edges stay straight, the C1
  * curves are fitted to it, the distance bounds are kept against it, and the
  * accuracy of the linear and of the curved mesh is measured on it. Without it

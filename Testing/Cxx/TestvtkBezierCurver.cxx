@@ -16,6 +16,9 @@
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkStringArray.h"
@@ -136,6 +139,39 @@ TEST(vtkBezierCurver, DecimatedAndCurvedIsMoreAccurateThanLinearWithinTheBounds)
   const double curvedPixels = FieldScalar(curved, arrays::MisclassifiedPixelsCurved);
   EXPECT_GT(linear, 0.0);
   EXPECT_LT(curvedPixels, 0.67 * linear) << "linear " << linear << ", curved " << curvedPixels;
+}
+
+TEST(vtkBezierCurver, ReadsTheLabelArraySelectedOnPort1)
+{
+  // The labels in a named array beside zero scalars: selected, they give the
+  // curve of the plain image; the scalars alone would be an empty image.
+  auto image = MakeVtkImage(MakeDiscSliceXZ(40, 14.3));
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  auto curve = [&](vtkImageData* onPort1, const char* selected) {
+    vtkNew<vtkBezierCurver> curver;
+    curver->SetInputConnection(0, mesher->GetOutputPort(0));
+    curver->SetInputDataObject(1, onPort1);
+    if (selected)
+      curver->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, selected);
+    MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+    curver->Update();
+    EXPECT_TRUE(errors.Messages.empty()) << (errors.Messages.empty() ? "" : errors.Messages[0]);
+    return FieldScalar(curver->GetOutput(), arrays::MisclassifiedPixelsCurved);
+  };
+  const double plain = curve(image, nullptr);
+  vtkNew<vtkImageData> relabelled;
+  relabelled->DeepCopy(image);
+  vtkNew<vtkIntArray> labels;
+  labels->DeepCopy(image->GetPointData()->GetScalars());
+  labels->SetName("labels");
+  vtkNew<vtkIntArray> zeros;
+  zeros->SetName("intensity");
+  zeros->SetNumberOfTuples(labels->GetNumberOfTuples());
+  zeros->Fill(0);
+  relabelled->GetPointData()->SetScalars(zeros);
+  relabelled->GetPointData()->AddArray(labels);
+  EXPECT_EQ(curve(relabelled, "labels"), plain);
 }
 
 TEST(vtkBezierCurver, BadInputIsOneErrorAndAnEmptyOutput)

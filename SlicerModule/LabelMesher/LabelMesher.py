@@ -52,6 +52,8 @@ class LabelMesherParameterNode:
     curve: bool = False
     smoothness: Annotated[int, WithinRange(1, 2)] = 1
     tension: Annotated[float, WithinRange(0.0, 1.0)] = 1.0 / 3.0
+    blockCells: Annotated[int, WithinRange(0, 2147483647)] = 1000000
+    memoryLimit: Annotated[float, WithinRange(0.0, 1.0e7)] = 0.0
 
 
 class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
@@ -153,7 +155,8 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
                         MeshingParameters(image_to_mesh_distance=p.imageToMeshDistance,
                                           mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
                                           minimum_angle=p.minimumAngle, include_background=p.includeBackground,
-                                          curve=p.curve, smoothness=p.smoothness, tension=p.tension),
+                                          curve=p.curve, smoothness=p.smoothness, tension=p.tension,
+                                          block_cells=p.blockCells, memory_limit=p.memoryLimit),
                         progress, lambda: self._cancelRequested)
                     self.ui.summaryText.plainText = summary_text(report)
                 except MeshingCancelled:

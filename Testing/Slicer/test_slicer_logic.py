@@ -101,6 +101,12 @@ class ObliquePlacementTest(unittest.TestCase):
         near = grown[nearest[:, 2] + reach, nearest[:, 1] + reach, nearest[:, 0] + reach]
         self.assertTrue(np.all(near), f"{np.sum(~near)} cells far from the label")
 
+    def test_block_by_block_keeps_the_guarantees(self):
+        result = mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(block_cells=20000))
+        check_guarantees(self, result.report, 15.0)
+        self.assertGreater(result.report["decimation"]["blocks"], 1)
+        self.assertEqual(self.placed.report["decimation"]["blocks"], 1)  # the default: one block here
+
     def test_report_and_materials(self):
         for result in (self.framed, self.placed):
             check_guarantees(self, result.report, 15.0)
@@ -261,6 +267,8 @@ class ProgressCancelAndErrorsTest(unittest.TestCase):
             (dict(ijk_to_ras=np.eye(4), selected=[7]), "no labelled voxel"),
             (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(minimum_angle=31.0)), "minimum angle"),
             (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(image_to_mesh_distance=-1.0)), "0..64"),
+            (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(block_cells=-5)), "block cells"),
+            (dict(ijk_to_ras=np.eye(4), parameters=MeshingParameters(memory_limit=1.0)), "memory limit of 1 MiB"),
         ]
         for kwargs, fragment in cases:
             with self.subTest(fragment=fragment):

@@ -55,6 +55,8 @@ class MeshingParameters:
     curve: bool = False  # one slice only: curve the mesh (vtkBezierCurver), keeping validity and both bounds
     smoothness: int = 1  # 1 (C1, fitted to the image) or 2 (C2) at the curves' joints
     tension: float = 1.0 / 3.0  # C1 handle length factor, dimensionless, [0, 1]
+    block_cells: int = 1000000  # decimating: initial cells per block (0: one block), vtkLabelMesher's BlockCells
+    memory_limit: float = 0.0  # MiB the process may hold; a run estimated above it is refused (0: available memory)
 
     def validate(self, dimension: int):
         for name in ("image_to_mesh_distance", "mesh_to_image_distance"):
@@ -65,6 +67,10 @@ class MeshingParameters:
         if self.decimate and not (0.0 < self.minimum_angle <= limit):
             raise MeshingError(
                 f"minimum angle must be within (0, {limit:g}] degrees for a {dimension}D image, not {self.minimum_angle}")
+        if not (isinstance(self.block_cells, int) and 0 <= self.block_cells < 2**63):
+            raise MeshingError(f"block cells must be a whole number of cells, 0 or more, not {self.block_cells}")
+        if not (0.0 <= self.memory_limit < float("inf")):
+            raise MeshingError(f"memory limit must be 0 (the memory available) or more MiB, not {self.memory_limit}")
         if self.curve:
             if dimension != 2:
                 raise MeshingError("curving needs a 2D image (a single slice); this one is 3D")
@@ -226,8 +232,10 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
         # Mesher and decimator in one filter, block by block: the initial mesh is never whole.
         mesher = labelmesher.vtkLabelMesher()
         mesher.SetMinimumAngle(parameters.minimum_angle)
+        mesher.SetBlockCells(parameters.block_cells)
     else:
         mesher = labelmesher.vtkLabelOctreeMesher()
+    mesher.SetMemoryLimit(parameters.memory_limit)
     mesher.SetInputData(image)
     mesher.SetImageToMeshDistance(parameters.image_to_mesh_distance)
     mesher.SetMeshToImageDistance(parameters.mesh_to_image_distance)
@@ -310,6 +318,8 @@ def quality_report(mesh, dims, placement: Placement, parameters: MeshingParamete
         decimation = {key: _field(mesh, array) for key, array in (
             ("minimum_angle_bound_degrees", "AngleBound"), ("cells_before", "CellsBefore"),
             ("cells_after", "CellsAfter"), ("merges", "Merges"))}
+        if fd.GetArray("Blocks") is not None:
+            decimation["blocks"] = int(_field(mesh, "Blocks"))
     return {
         "image": {"dimensions": list(dims), "spacing": placement.spacing.tolist(),
                   "ijk_to_ras_rotation": placement.rotation.tolist(), "origin_ras": placement.origin.tolist()},

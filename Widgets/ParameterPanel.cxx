@@ -10,8 +10,10 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QSignalBlocker>
+#include <QSpinBox>
 
 #include <cmath>
+#include <limits>
 
 namespace labelmesher
 {
@@ -99,6 +101,31 @@ ParameterPanel::ParameterPanel(QWidget* parent)
                                 "Without decimation the proven bounds are 30 (3D) and 45 (2D) degrees."));
   form->addRow(tr("Minimum angle"), this->AngleBox);
 
+  this->BlockCellsBox = new QSpinBox(this);
+  this->BlockCellsBox->setObjectName(QStringLiteral("blockCells"));
+  this->BlockCellsBox->setRange(0, std::numeric_limits<int>::max());
+  this->BlockCellsBox->setSingleStep(100000);
+  this->BlockCellsBox->setValue(1000000);
+  this->BlockCellsBox->setSuffix(tr(" cells"));
+  this->BlockCellsBox->setSpecialValueText(tr("one block"));
+  this->BlockCellsBox->setToolTip(tr("Decimating: mesher and decimator run block by block, each block of "
+                                     "about this many initial cells, so that memory follows one block and "
+                                     "the output, not the whole initial mesh. 0: one block. The mesh "
+                                     "depends on it a little, never on the thread count."));
+  form->addRow(tr("Block size"), this->BlockCellsBox);
+
+  this->MemoryLimitBox = new QDoubleSpinBox(this);
+  this->MemoryLimitBox->setObjectName(QStringLiteral("memoryLimit"));
+  this->MemoryLimitBox->setDecimals(0);
+  this->MemoryLimitBox->setRange(0.0, 1.0e7);
+  this->MemoryLimitBox->setSingleStep(1024.0);
+  this->MemoryLimitBox->setSuffix(tr(" MiB"));
+  this->MemoryLimitBox->setSpecialValueText(tr("available memory"));
+  this->MemoryLimitBox->setToolTip(tr("The most memory the viewer may hold while meshing, in MiB: a run "
+                                      "estimated above it is refused before it starts, with the estimate "
+                                      "named. 0: the memory available."));
+  form->addRow(tr("Memory limit"), this->MemoryLimitBox);
+
   this->CurveBox = new QCheckBox(tr("Curve (2D)"), this);
   this->CurveBox->setObjectName(QStringLiteral("curve"));
   this->CurveBox->setToolTip(tr("2D images: turn the mesh into cubic Bezier triangles whose interfaces "
@@ -135,12 +162,21 @@ ParameterPanel::ParameterPanel(QWidget* parent)
   }
   connect(this->DecimateBox, &QCheckBox::toggled, this, [this](bool on) {
     this->AngleBox->setEnabled(on);
+    this->BlockCellsBox->setEnabled(on);
     emit decimateChanged(on);
     emit parametersChanged();
   });
   connect(this->AngleBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double degrees) {
     this->markCustom();
     emit minimumAngleChanged(degrees);
+    emit parametersChanged();
+  });
+  connect(this->BlockCellsBox, QOverload<int>::of(&QSpinBox::valueChanged), this, [this](int cells) {
+    emit blockCellsChanged(cells);
+    emit parametersChanged();
+  });
+  connect(this->MemoryLimitBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double mib) {
+    emit memoryLimitChanged(mib);
     emit parametersChanged();
   });
   connect(this->CurveBox, &QCheckBox::toggled, this, [this](bool on) {
@@ -293,6 +329,28 @@ void ParameterPanel::setSmoothness(int continuity)
 {
   if (continuity == 1 || continuity == 2)
     this->SmoothnessBox->setCurrentIndex(continuity - 1);
+}
+
+int ParameterPanel::blockCells() const
+{
+  return this->BlockCellsBox->value();
+}
+
+void ParameterPanel::setBlockCells(int cells)
+{
+  if (cells >= 0)
+    this->BlockCellsBox->setValue(cells);
+}
+
+double ParameterPanel::memoryLimit() const
+{
+  return this->MemoryLimitBox->value();
+}
+
+void ParameterPanel::setMemoryLimit(double mib)
+{
+  if (std::isfinite(mib) && mib >= 0.0)
+    this->MemoryLimitBox->setValue(mib); // clamped to 10^7 MiB
 }
 
 double ParameterPanel::tension() const

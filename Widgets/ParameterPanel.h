@@ -19,6 +19,7 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QSpinBox;
 class vtkBezierCurver;
 class vtkLabelOctreeMesher;
 class vtkMeshDecimator;
@@ -36,6 +37,8 @@ class ParameterPanel : public QWidget
   Q_PROPERTY(DistanceUnit distanceUnit READ distanceUnit WRITE setDistanceUnit NOTIFY distanceUnitChanged)
   Q_PROPERTY(bool decimate READ decimate WRITE setDecimate NOTIFY decimateChanged)
   Q_PROPERTY(double minimumAngle READ minimumAngle WRITE setMinimumAngle NOTIFY minimumAngleChanged)
+  Q_PROPERTY(int blockCells READ blockCells WRITE setBlockCells NOTIFY blockCellsChanged)
+  Q_PROPERTY(double memoryLimit READ memoryLimit WRITE setMemoryLimit NOTIFY memoryLimitChanged)
   Q_PROPERTY(bool curve READ curve WRITE setCurve NOTIFY curveChanged)
   Q_PROPERTY(int smoothness READ smoothness WRITE setSmoothness NOTIFY smoothnessChanged)
   Q_PROPERTY(double tension READ tension WRITE setTension NOTIFY tensionChanged)
@@ -62,6 +65,12 @@ public:
   DistanceUnit distanceUnit() const { return this->Unit; }
   bool decimate() const;
   double minimumAngle() const; ///< degrees
+  /// Decimating: initial cells per block of the streamed mesher and decimator (vtkLabelMesher's
+  /// BlockCells); 0: one block.
+  int blockCells() const;
+  /// MiB the process may hold at most; a run estimated above it is refused before it starts. 0: the
+  /// memory available.
+  double memoryLimit() const;
   /// Curve the mesh with vtkBezierCurver: only for 2D images (always false for 3D ones).
   bool curve() const;
   int smoothness() const;      ///< 1 (C1) or 2 (C2)
@@ -81,6 +90,8 @@ public slots:
   void setDistanceUnit(DistanceUnit unit);
   void setDecimate(bool on);
   void setMinimumAngle(double degrees);
+  void setBlockCells(int cells);    ///< negative values are refused
+  void setMemoryLimit(double mib);  ///< negative and non-finite values are refused
   void setCurve(bool on); ///< kept for the next 2D image when the current one is 3D
   void setSmoothness(int continuity);
   void setTension(double tension);
@@ -92,6 +103,8 @@ signals:
   void distanceUnitChanged(DistanceUnit unit);
   void decimateChanged(bool on);
   void minimumAngleChanged(double degrees);
+  void blockCellsChanged(int cells);
+  void memoryLimitChanged(double mib);
   void curveChanged(bool on);
   void smoothnessChanged(int continuity);
   void tensionChanged(double tension);
@@ -121,6 +134,8 @@ private:
   QDoubleSpinBox* MeshToImageBox = nullptr;
   QCheckBox* DecimateBox = nullptr;
   QDoubleSpinBox* AngleBox = nullptr;
+  QSpinBox* BlockCellsBox = nullptr;
+  QDoubleSpinBox* MemoryLimitBox = nullptr;
   QCheckBox* CurveBox = nullptr;
   QComboBox* SmoothnessBox = nullptr;
   QDoubleSpinBox* TensionBox = nullptr;

@@ -56,6 +56,8 @@ labelmesher_cli::MeshingSettings SettingsOf(const widgets::ParameterPanel& panel
   settings.Curve = panel.curve();
   settings.Smoothness = panel.smoothness();
   settings.Tension = panel.tension();
+  settings.BlockCells = panel.blockCells();
+  settings.MemoryLimit = panel.memoryLimit();
   return settings;
 }
 } // namespace

@@ -13,6 +13,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QtTest>
 
 #include <limits>
@@ -45,6 +46,32 @@ private slots:
     QCOMPARE(panel.smoothness(), 1);
     QCOMPARE(panel.tension(), 0.333);
     QCOMPARE(panel.property("minimumAngle").toDouble(), 15.0); // a Q_PROPERTY
+    QCOMPARE(panel.blockCells(), 1000000); // vtkLabelMesher's and the CLI's default
+    QCOMPARE(panel.memoryLimit(), 0.0);    // the memory available
+  }
+
+  void blockSizeAndMemoryLimit()
+  {
+    ParameterPanel panel;
+    QSignalSpy blocks(&panel, &ParameterPanel::blockCellsChanged);
+    QSignalSpy limit(&panel, &ParameterPanel::memoryLimitChanged);
+    panel.setBlockCells(250000);
+    panel.setMemoryLimit(4096.0);
+    QCOMPARE(panel.blockCells(), 250000);
+    QCOMPARE(panel.memoryLimit(), 4096.0);
+    QCOMPARE(blocks.count(), 1);
+    QCOMPARE(limit.count(), 1);
+    panel.setBlockCells(-1);
+    panel.setMemoryLimit(-5.0);
+    panel.setMemoryLimit(std::numeric_limits<double>::quiet_NaN());
+    QCOMPARE(panel.blockCells(), 250000);
+    QCOMPARE(panel.memoryLimit(), 4096.0);
+    panel.setBlockCells(0);
+    QCOMPARE(child<QSpinBox>(panel, "blockCells")->text(), QStringLiteral("one block"));
+    QVERIFY(child<QSpinBox>(panel, "blockCells")->toolTip().contains("initial cells"));
+    QVERIFY(child<QDoubleSpinBox>(panel, "memoryLimit")->toolTip().contains("MiB"));
+    panel.setDecimate(false); // blocks stream the decimator: nothing to set without it
+    QVERIFY(!child<QSpinBox>(panel, "blockCells")->isEnabled());
   }
 
   void presetsSetValuesAndSignal()

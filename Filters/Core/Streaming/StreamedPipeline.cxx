@@ -272,13 +272,31 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       // the vertex it removes, inside that star). Freezing only the faces of
       // its sides left 3 % more cells on digimouse: the volume around them
       // was merged against a fixed fine interface.
-      // Cells lie in their leaves until merged, and none is merged yet.
+      // Cells lie in their leaves until merged, and none is merged yet: only
+      // the cells of leaves near such a face are tested, each by its own box
+      // (a cell whose box misses the face's neighbourhood holds no mesh face
+      // within h(I,M) of it).
       const int nv = mesh.VerticesPerCell();
       for (std::size_t i = first; i < last; ++i)
         if (around.Meets(leaves[i].Box))
           for (std::size_t c = i == first ? 0 : cellEnd[i - first - 1]; c < cellEnd[i - first]; ++c)
-            for (int k = 0; k < nv; ++k)
-              frozen[static_cast<std::size_t>(mesh.Cells[c][k])] = 1;
+          {
+            std::array<double, 3> lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+            for (int a = 0; a < 3; ++a)
+            {
+              lo[a] = hi[a] = mesh.Position[mesh.Cells[c][0]][a] / 2.0;
+              for (int k = 1; k < nv; ++k)
+              {
+                lo[a] = std::min(lo[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
+                hi[a] = std::max(hi[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
+              }
+            }
+            bool meets = false;
+            around.ForEachMeeting(GrownVoxelBox(lo, hi, 0.0, dimension, octree.Depth), [&](std::uint32_t) { meets = true; });
+            if (meets)
+              for (int k = 0; k < nv; ++k)
+                frozen[static_cast<std::size_t>(mesh.Cells[c][k])] = 1;
+          }
     };
     if (whole)
       scope.FreezeNear = nullptr; // one block certifies every image face, or the input is wrong

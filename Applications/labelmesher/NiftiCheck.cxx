@@ -91,17 +91,20 @@ void CheckNiftiGeometry(const std::string& path)
       swap = size != static_cast<std::int32_t>(candidate->Size);
     }
   }
-  // niftilib reads a file with the NIfTI magic ("n+1"/"ni1" at byte 344, "n+2"/"ni2" at byte 4)
-  // whatever its sizeof_hdr, and such a header escaped the checks below (a hang, found by
-  // fuzzing); the standard fixes sizeof_hdr, so a damaged one is refused.
-  auto magic = [&](std::size_t at, char version) {
-    return bytes.size() >= at + 4 && bytes[at] == 'n' && (bytes[at + 1] == '+' || bytes[at + 1] == 'i') &&
-      bytes[at + 2] == version && bytes[at + 3] == '\0';
+  // niftilib reads a file with a NIfTI magic ("n+V"/"niV", V any digit 1-9, at byte 344 or 4)
+  // whatever its sizeof_hdr, and such a header escaped the checks below (a hang, and ITK's abort
+  // on a geometry read from the wrong offsets: both found by fuzzing); the standard fixes
+  // sizeof_hdr, so a damaged one is refused.
+  auto magic = [&](std::size_t at) -> char {
+    const bool found = bytes.size() >= at + 4 && bytes[at] == 'n' && (bytes[at + 1] == '+' || bytes[at + 1] == 'i') &&
+      bytes[at + 2] >= '1' && bytes[at + 2] <= '9' && bytes[at + 3] == '\0';
+    return found ? static_cast<char>(bytes[at + 2]) : '\0';
   };
-  if (!layout && (magic(344, '1') || magic(4, '2')))
+  const char version = magic(344) ? magic(344) : magic(4);
+  if (!layout && version)
   {
     throw InputError("'" + path + "' is not a valid NIfTI file (its header's sizeof_hdr is " + std::to_string(size) +
-      ", expected " + (magic(344, '1') ? "348" : "540") + ")");
+      ", expected " + (magic(344) ? "348" : "540") + ")");
   }
   if (!layout || bytes.size() < layout->Size)
   {

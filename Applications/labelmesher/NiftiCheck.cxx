@@ -100,8 +100,7 @@ void CheckNiftiGeometry(const std::string& path)
       bytes[at + 2] >= '1' && bytes[at + 2] <= '9' && bytes[at + 3] == '\0';
     return found ? static_cast<char>(bytes[at + 2]) : '\0';
   };
-  const char version = magic(344) ? magic(344) : magic(4);
-  if (!layout && version)
+  if (!layout && (magic(344) || magic(4)))
   {
     throw InputError("'" + path + "' is not a valid NIfTI file (its header's sizeof_hdr is " + std::to_string(size) +
       ", expected " + (magic(344) ? "348" : "540") + ")");

@@ -71,6 +71,11 @@ public:
       box.Low[a] = leaf.Origin[a];
       box.High[a] = leaf.Origin[a] + (a < leaf.Dimension ? leaf.Size - 1 : 0);
     }
+    return Meets(box);
+  }
+  /// Some added box meets `box`.
+  bool Meets(const VoxelBox& box) const
+  {
     bool meets = false;
     ForEachMeeting(box, [&](std::uint32_t) { meets = true; });
     return meets;
@@ -291,9 +296,7 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
                 hi[a] = std::max(hi[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
               }
             }
-            bool meets = false;
-            around.ForEachMeeting(GrownVoxelBox(lo, hi, 0.0, dimension, octree.Depth), [&](std::uint32_t) { meets = true; });
-            if (meets)
+            if (around.Meets(GrownVoxelBox(lo, hi, 0.0, dimension, octree.Depth)))
               for (int k = 0; k < nv; ++k)
                 frozen[static_cast<std::size_t>(mesh.Cells[c][k])] = 1;
           }

@@ -68,7 +68,7 @@ void MeshAndReport(benchmark::State& state, const LabelImage& image)
       stages.Add(result.Timings);
       cells = result.Mesh.NumberOfCells();
       foregroundCells = benchmarks::ForegroundCells(result.Mesh);
-      boundaryFaces = result.Boundary.NumberOfCells();
+      boundaryFaces = result.Interfaces.NumberOfCells();
       leaves = result.NumberOfLeaves;
       ++iterations;
       benchmark::DoNotOptimize(result.Mesh.Points.data());

@@ -51,6 +51,61 @@ vtkDataArray* MaterialArray(vtkUnstructuredGrid* mesh, std::string& error)
   return materials;
 }
 
+bool GatherSimplices(vtkUnstructuredGrid* input, vtkDataArray* materials, int dimension, const PointPlacer& place,
+  const std::string& why, SimplexMesh& mesh, std::string& error)
+{
+  mesh.Dimension = dimension;
+  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    if (!place(input->GetPoint(p), mesh.Points[static_cast<std::size_t>(p)], error))
+      return false;
+  }
+  const int type = dimension == 3 ? VTK_TETRA : VTK_TRIANGLE;
+  const int nv = dimension + 1;
+  const vtkIdType cells = input->GetNumberOfCells();
+  mesh.Connectivity.reserve(static_cast<std::size_t>(cells) * nv);
+  mesh.Materials.reserve(static_cast<std::size_t>(cells));
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    if (input->GetCellType(c) != type)
+    {
+      error = "Input cell " + std::to_string(c) + " is not a " + (dimension == 3 ? "tetrahedron" : "triangle") +
+        " (VTK type " + std::to_string(input->GetCellType(c)) + ")" + why;
+      return false;
+    }
+    std::int32_t label;
+    if (!CellMaterial(materials, c, label, error))
+      return false;
+    vtkIdType n;
+    const vtkIdType* ids;
+    input->GetCellPoints(c, n, ids);
+    std::int64_t v[4] = { ids[0], ids[1], ids[2], dimension == 3 ? ids[3] : 0 };
+    const Point3& a = mesh.Points[v[0]];
+    const Point3& b = mesh.Points[v[1]];
+    const Point3& d = mesh.Points[v[2]];
+    double orientation;
+    if (dimension == 2)
+    {
+      orientation = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    }
+    else
+    {
+      const Point3& e = mesh.Points[v[3]];
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+      const double z[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] };
+      orientation = u[0] * (w[1] * z[2] - w[2] * z[1]) - u[1] * (w[0] * z[2] - w[2] * z[0]) +
+        u[2] * (w[0] * z[1] - w[1] * z[0]);
+    }
+    if (orientation < 0)
+      std::swap(v[1], v[2]);
+    mesh.Connectivity.insert(mesh.Connectivity.end(), v, v + nv);
+    mesh.Materials.push_back(label);
+  }
+  return true;
+}
+
 bool CellMaterial(vtkDataArray* materials, vtkIdType c, std::int32_t& label, std::string& error)
 {
   const double value = materials->GetComponent(c, 0);
@@ -115,6 +170,21 @@ double ResolveBound(double set, vtkDataObject* input, const char* name)
 void AddScalarField(vtkFieldData* fd, const char* name, double value)
 {
   AddField<vtkDoubleArray>(fd, name, std::vector<double>{ value });
+}
+
+void PassMaterialTable(vtkFieldData* from, vtkFieldData* to)
+{
+  if (!from || !to)
+  {
+    return;
+  }
+  for (const char* name : { arrays::MaterialLabel, arrays::MaterialName, arrays::MaterialColor })
+  {
+    if (vtkAbstractArray* array = from->GetAbstractArray(name))
+    {
+      to->AddArray(array);
+    }
+  }
 }
 
 void AddStageTimings(vtkFieldData* fd, const std::vector<StageTiming>& timings)

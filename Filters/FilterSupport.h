@@ -56,6 +56,17 @@ vtkDataArray* MaterialArray(vtkUnstructuredGrid* mesh, std::string& error);
 /// bits), or false with a sentence in `error`.
 bool CellMaterial(vtkDataArray* materials, vtkIdType c, std::int32_t& label, std::string& error);
 
+/// Maps an input point to the core's coordinates, or returns false with a sentence in `error`.
+using PointPlacer = std::function<bool(const double x[3], Point3& placed, std::string& error)>;
+
+/// The cells of `input` (with their `materials`, MaterialArray's) as the core's SimplexMesh of
+/// `dimension`: each point through `place`; each cell checked to be a linear triangle (2D) or
+/// tetrahedron (3D) with a valid label, and made positively oriented in the placed coordinates
+/// (a placement may reflect). A cell of another type is refused with "Input cell N is not a
+/// triangle (VTK type T)" + `why`. Returns false with a sentence in `error`.
+bool GatherSimplices(vtkUnstructuredGrid* input, vtkDataArray* materials, int dimension, const PointPlacer& place,
+  const std::string& why, SimplexMesh& mesh, std::string& error);
+
 /// Cells of `verticesPerCell` points each, as VTK's offsets + connectivity;
 /// `swapSecondAndThird` reverses every cell's orientation on the way.
 vtkSmartPointer<vtkCellArray> MakeCellArray(
@@ -63,6 +74,11 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(
 
 /// One-tuple double array `name` = value.
 void AddScalarField(vtkFieldData* fd, const char* name, double value);
+
+/// Copies the materials' names and colours (MaterialLabel, MaterialName, MaterialColor) from
+/// `from` to `to` when `from` has them, so that a writer at the end of a pipeline still names the
+/// materials a segmentation file named (vtkLabelImageReader puts them on the image).
+void PassMaterialTable(vtkFieldData* from, vtkFieldData* to);
 /// `set` when >= 0, else the first value of `input`'s field array `name`, else -1.
 double ResolveBound(double set, vtkDataObject* input, const char* name);
 /// Array `name` of `values`, as ArrayT (vtkIntArray, vtkDoubleArray, vtkStringArray).

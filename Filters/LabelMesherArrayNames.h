@@ -25,6 +25,13 @@ inline constexpr char MinimumJacobian[] = "MinimumJacobian";
 inline constexpr char ScaledJacobian[] = "ScaledJacobian";
 inline constexpr char Valid[] = "Valid";
 
+// ---- field data: the materials' names and colours, one tuple per material ----
+// (vtkLabelImageReader fills them from a 3D Slicer segmentation or a colour table; every filter
+// passes them from its input to its outputs; vtkLabelMeshWriter names the materials with them)
+inline constexpr char MaterialLabel[] = "MaterialLabel"; ///< int, the image label
+inline constexpr char MaterialName[] = "MaterialName";   ///< string (UTF-8), may be empty
+inline constexpr char MaterialColor[] = "MaterialColor"; ///< double x 3, RGB in [0, 1]; -1: none given
+
 // ---- field data: parameters and run ----
 inline constexpr char ImageToMeshDistance[] = "ImageToMeshDistance";
 inline constexpr char MeshToImageDistance[] = "MeshToImageDistance";

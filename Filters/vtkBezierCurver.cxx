@@ -47,6 +47,7 @@ namespace
 namespace arrays = labelmesher::arrays;
 using labelmesher::AddField;
 using labelmesher::AddScalarField;
+using labelmesher::PassMaterialTable;
 
 /*
  * Design. RequestData: (1) flatten the input triangles into the core's 2D
@@ -138,43 +139,12 @@ bool FlattenTriangles(vtkUnstructuredGrid* input, PlaneAxes& plane, labelmesher:
     error = "Input mesh does not lie in an axis plane (x-y, x-z or y-z): the curver needs a 2D mesh.";
     return false;
   }
-  linear.Dimension = 2;
-  linear.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
-  {
-    const double* x = input->GetPoint(p);
-    linear.Points[static_cast<std::size_t>(p)] = { x[plane.Axes[0]], x[plane.Axes[1]], 0.0 };
-  }
-  linear.Connectivity.reserve(static_cast<std::size_t>(3 * numberOfCells));
-  for (vtkIdType c = 0; c < numberOfCells; ++c)
-  {
-    if (input->GetCellType(c) != VTK_TRIANGLE)
-    {
-      error = "Input cell " + std::to_string(c) + " is not a linear triangle (VTK type " +
-        std::to_string(input->GetCellType(c)) + "): the curver needs triangles.";
-      return false;
-    }
-    std::int32_t label;
-    if (!labelmesher::CellMaterial(materials, c, label, error))
-    {
-      return false;
-    }
-    vtkIdType n;
-    const vtkIdType* ids;
-    input->GetCellPoints(c, n, ids);
-    std::array<std::int64_t, 3> v{ ids[0], ids[1], ids[2] };
-    const auto& a = linear.Points[v[0]];
-    const auto& b = linear.Points[v[1]];
-    const auto& d = linear.Points[v[2]];
-    // The plane's own orientation is arbitrary: make every triangle counter-clockwise.
-    if ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) < 0.0)
-    {
-      std::swap(v[1], v[2]);
-    }
-    linear.Connectivity.insert(linear.Connectivity.end(), v.begin(), v.end());
-    linear.Materials.push_back(label);
-  }
-  return true;
+  // The plane's own orientation is arbitrary: every triangle is made counter-clockwise in it.
+  const auto inPlane = [&](const double x[3], labelmesher::Point3& placed, std::string&) {
+    placed = { x[plane.Axes[0]], x[plane.Axes[1]], 0.0 };
+    return true;
+  };
+  return labelmesher::GatherSimplices(input, materials, 2, inPlane, ": the curver needs linear triangles.", linear, error);
 }
 
 /// Pass 2: the optional image: its pixels as the core's LabelImage, the map
@@ -404,6 +374,7 @@ int vtkBezierCurver::RequestData(
 
   PackBezierCells(result, plane, output);
   vtkFieldData* fd = output->GetFieldData();
+  PassMaterialTable(input->GetFieldData(), fd);
   AddScalarField(fd, arrays::Smoothness, this->Smoothness);
   AddScalarField(fd, arrays::Tension, this->Tension);
   AddScalarField(fd, arrays::MaximumUntanglingSteps, this->MaximumUntanglingSteps);

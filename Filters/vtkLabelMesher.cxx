@@ -46,7 +46,7 @@ vtkLabelMesher::vtkLabelMesher()
 }
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkLabelMesher::GetBoundaryOutput()
+vtkPolyData* vtkLabelMesher::GetInterfacesOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
@@ -151,7 +151,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   labelmesher::DecimationResult& decimated = result.Decimated;
   const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(decimated.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
-  labelmesher::PackInterfaces(decimated.Boundary, decimated.BoundaryMaterials, placement, boundary);
+  labelmesher::PackInterfaces(decimated.Interfaces, decimated.InterfaceMaterials, placement, boundary);
 
   vtkFieldData* fd = output->GetFieldData();
   const std::size_t before =
@@ -165,6 +165,8 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   labelmesher::AddScalarField(fd, arrays::Blocks, static_cast<double>(result.Streaming.Blocks));
   labelmesher::AddScalarField(fd, arrays::LargestBlockCells, static_cast<double>(result.Streaming.LargestBlockCells));
   labelmesher::AddScalarField(fd, arrays::AssembledCells, static_cast<double>(result.Streaming.AssembledCells));
+  labelmesher::PassMaterialTable(input->GetFieldData(), fd);
+  labelmesher::PassMaterialTable(input->GetFieldData(), boundary->GetFieldData());
   if (this->MeasureOutput)
   {
     this->SetProgressText("measure");

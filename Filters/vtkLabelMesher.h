@@ -142,7 +142,7 @@ public:
   /**
    * The decimated interfaces (output port 1).
    */
-  vtkPolyData* GetBoundaryOutput();
+  vtkPolyData* GetInterfacesOutput();
 
 protected:
   vtkLabelMesher();

@@ -47,7 +47,7 @@ vtkLabelOctreeMesher::vtkLabelOctreeMesher()
 }
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkLabelOctreeMesher::GetBoundaryOutput()
+vtkPolyData* vtkLabelOctreeMesher::GetInterfacesOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
@@ -143,12 +143,14 @@ int vtkLabelOctreeMesher::RequestData(
 
   const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(result.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
-  labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
+  labelmesher::PackInterfaces(result.Interfaces, result.InterfaceMaterials, placement, boundary);
   this->AddParameters(output->GetFieldData(), placement.VoxelSize, result.NumberOfLeaves);
   labelmesher::AddScalarField(output->GetFieldData(), labelmesher::arrays::EstimatedMemory, static_cast<double>(estimate.RunBytes) / (1 << 20));
   labelmesher::AddScalarField(output->GetFieldData(), labelmesher::arrays::InterfaceFaces, static_cast<double>(estimate.InterfaceFaces));
   this->Measure(output->GetFieldData(), image, kept, meshShare, result.Timings);
   labelmesher::AddStageTimings(output->GetFieldData(), result.Timings);
+  labelmesher::PassMaterialTable(input->GetFieldData(), output->GetFieldData());
+  labelmesher::PassMaterialTable(input->GetFieldData(), boundary->GetFieldData());
   this->SetProgressText(nullptr);
   this->UpdateProgress(1.0);
   return 1;

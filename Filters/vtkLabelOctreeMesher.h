@@ -35,7 +35,7 @@
  *
  * Guarantees. Minimum dihedral angle 30 degrees (3D), minimum planar angle 45
  * degrees (2D): proved by exhaustive enumeration of the face configurations the
- * octree rules allow (Testing/Cxx/TestAngleBoundEnumeration.cxx); the
+ * octree rules allow (Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx); the
  * dissertation's 19.47 degree claim does not hold for its own rules on graded
  * faces, which the neighbour rule excludes. Two-sided Hausdorff distance between
  * the image boundary and the mesh boundary within ImageToMeshDistance and
@@ -77,9 +77,10 @@
  *   `ImageEulerCharacteristic`, `MeshComponents`, `MeshEulerCharacteristic`,
  *   `TopologyMatches` (1 or 0).
  *
- * Output port 1, vtkPolyData: the boundary between different materials (the
- * background included): triangles in 3D, lines in 2D, with the 2-component int
- * cell array `Materials` holding the labels on either side.
+ * Output port 1, vtkPolyData (GetInterfacesOutput(), "Interfaces" in ParaView):
+ * the interfaces, faces between different materials (the background included):
+ * triangles in 3D, lines in 2D, with the 2-component int cell array `Materials`
+ * holding the labels on either side.
  *
  * Progress is reported through UpdateProgress (with the stage as ProgressText) and
  * AbortExecute stops the run (the output is then empty).
@@ -186,9 +187,9 @@ public:
   ///@}
 
   /**
-   * The boundary surface (output port 1).
+   * The interfaces: faces between different materials, cell array `Materials` (output port 1).
    */
-  vtkPolyData* GetBoundaryOutput();
+  vtkPolyData* GetInterfacesOutput();
 
 protected:
   vtkLabelOctreeMesher();

@@ -45,12 +45,12 @@ namespace
 {
 namespace arrays = labelmesher::arrays;
 
-/// Pass 2. Returns false with a sentence in `error`.
+/// Pass 2: the input cells in the image's index space, positively oriented there. Returns false
+/// with a sentence in `error`.
 bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& placement, int dimension,
   labelmesher::SimplexMesh& mesh, std::string& error)
 {
-  const vtkIdType cells = input->GetNumberOfCells();
-  if (cells == 0 || !input->GetPoints())
+  if (input->GetNumberOfCells() == 0 || !input->GetPoints())
   {
     error = "Input mesh has no cells: nothing to decimate.";
     return false;
@@ -60,75 +60,25 @@ bool GatherMesh(vtkUnstructuredGrid* input, const labelmesher::ImagePlacement& p
   {
     return false;
   }
-  const int type = dimension == 3 ? VTK_TETRA : VTK_TRIANGLE;
-  mesh.Dimension = dimension;
-  mesh.Points.resize(static_cast<std::size_t>(input->GetNumberOfPoints()));
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
-  {
-    const double* x = input->GetPoint(p);
-    labelmesher::Point3 index;
+  const auto toIndex = [&](const double x[3], labelmesher::Point3& index, std::string& why) {
     if (!placement.ToIndex({ x[0], x[1], x[2] }, index))
     {
-      error = "The image's direction matrix is singular.";
+      why = "The image's direction matrix is singular.";
       return false;
     }
     if (dimension == 2)
     {
       if (std::abs(index[2]) > 1e-6)
       {
-        error = "Input mesh does not lie in the plane of the 2D image on port 1: it is not that image's mesh.";
+        why = "Input mesh does not lie in the plane of the 2D image on port 1: it is not that image's mesh.";
         return false;
       }
       index[2] = 0.0;
     }
-    mesh.Points[static_cast<std::size_t>(p)] = index;
-  }
-  const int nv = dimension + 1;
-  mesh.Connectivity.reserve(static_cast<std::size_t>(cells) * nv);
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    if (input->GetCellType(c) != type)
-    {
-      error = "Input cell " + std::to_string(c) + " is not a " + (dimension == 3 ? "tetrahedron" : "triangle") +
-        " (VTK type " + std::to_string(input->GetCellType(c)) + "), as the " + (dimension == 3 ? "3D" : "2D") +
-        " image on port 1 needs.";
-      return false;
-    }
-    std::int32_t label;
-    if (!labelmesher::CellMaterial(materials, c, label, error))
-    {
-      return false;
-    }
-    vtkIdType n;
-    const vtkIdType* ids;
-    input->GetCellPoints(c, n, ids);
-    std::int64_t v[4] = { ids[0], ids[1], ids[2], dimension == 3 ? ids[3] : 0 };
-    // Positively oriented in index space (a reflecting placement flips them).
-    const auto& a = mesh.Points[v[0]];
-    const auto& b = mesh.Points[v[1]];
-    const auto& d = mesh.Points[v[2]];
-    double orientation;
-    if (dimension == 2)
-    {
-      orientation = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-    }
-    else
-    {
-      const auto& e = mesh.Points[v[3]];
-      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-      const double z[3] = { e[0] - a[0], e[1] - a[1], e[2] - a[2] };
-      orientation = u[0] * (w[1] * z[2] - w[2] * z[1]) - u[1] * (w[0] * z[2] - w[2] * z[0]) +
-        u[2] * (w[0] * z[1] - w[1] * z[0]);
-    }
-    if (orientation < 0)
-    {
-      std::swap(v[1], v[2]);
-    }
-    mesh.Connectivity.insert(mesh.Connectivity.end(), v, v + nv);
-    mesh.Materials.push_back(label);
-  }
-  return true;
+    return true;
+  };
+  return labelmesher::GatherSimplices(input, materials, dimension, toIndex,
+    std::string(", as the ") + (dimension == 3 ? "3D" : "2D") + " image on port 1 needs.", mesh, error);
 }
 
 /// A bound the user set (>= 0), or the one the mesher recorded.
@@ -155,7 +105,7 @@ vtkMeshDecimator::vtkMeshDecimator()
 }
 
 //------------------------------------------------------------------------------
-vtkPolyData* vtkMeshDecimator::GetBoundaryOutput()
+vtkPolyData* vtkMeshDecimator::GetInterfacesOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
@@ -276,12 +226,15 @@ int vtkMeshDecimator::RequestData(
 
   const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(result.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
-  labelmesher::PackInterfaces(result.Boundary, result.BoundaryMaterials, placement, boundary);
+  labelmesher::PackInterfaces(result.Interfaces, result.InterfaceMaterials, placement, boundary);
 
   vtkFieldData* fd = output->GetFieldData();
   labelmesher::AddDecimationFields(fd, parameters, result.Counts, before, kept.NumberOfCells());
   labelmesher::AddScalarField(fd, arrays::IncludeBackground, this->IncludeBackground ? 1.0 : 0.0);
   labelmesher::AddScalarField(fd, arrays::VoxelSize, placement.VoxelSize);
+  labelmesher::PassMaterialTable(imageData ? imageData->GetFieldData() : nullptr, fd);
+  labelmesher::PassMaterialTable(input->GetFieldData(), fd); // the mesh's, where both have a table
+  labelmesher::PassMaterialTable(fd, boundary->GetFieldData());
   if (this->MeasureOutput)
   {
     this->SetProgressText("measure");

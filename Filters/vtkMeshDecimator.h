@@ -161,7 +161,7 @@ public:
   /**
    * The decimated interfaces (output port 1).
    */
-  vtkPolyData* GetBoundaryOutput();
+  vtkPolyData* GetInterfacesOutput();
 
 protected:
   vtkMeshDecimator();

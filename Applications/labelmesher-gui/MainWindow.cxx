@@ -142,10 +142,10 @@ bool MainWindow::openImage(const QString& path)
     this->fail(tr("cannot open an image while meshing; cancel the run first"));
     return false;
   }
-  labelmesher_cli::LabeledImage input;
+  io::LabeledImage input;
   try
   {
-    input = labelmesher_cli::ReadLabeledImage(path.toStdString());
+    input = io::ReadLabeledImage(path.toStdString());
   }
   catch (const std::exception& e)
   {

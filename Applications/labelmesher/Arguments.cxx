@@ -12,6 +12,10 @@
 
 namespace labelmesher_cli
 {
+
+using labelmesher::io::EndsWith;
+using labelmesher::io::Lower;
+using labelmesher::io::Trim;
 namespace
 {
 

@@ -11,6 +11,8 @@
 namespace labelmesher_cli
 {
 
+using labelmesher::io::VTKMessages;
+
 FilterMessages UpdateFilter(vtkAlgorithm* algorithm, const FilterProgress& progress)
 {
   VTKMessages errors(algorithm, vtkCommand::ErrorEvent);

@@ -81,7 +81,7 @@ bool MeshAndDecimate(
     return false;
   }
   out.Mesh = CopyOf(mesher->GetOutput());
-  out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
+  out.Interfaces = CopyOf(mesher->GetInterfacesOutput());
   return true;
 }
 
@@ -103,7 +103,7 @@ bool Mesh(vtkImageData* image, const MeshingSettings& settings, const FilterProg
   }
   out.Initial = CopyOf(mesher->GetOutput());
   out.Mesh = out.Initial;
-  out.Interfaces = CopyOf(mesher->GetBoundaryOutput());
+  out.Interfaces = CopyOf(mesher->GetInterfacesOutput());
   return true;
 }
 

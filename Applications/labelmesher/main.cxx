@@ -32,6 +32,7 @@
 #include <vector>
 
 using namespace labelmesher_cli;
+using namespace labelmesher::io;
 
 namespace
 {

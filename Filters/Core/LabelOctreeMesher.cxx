@@ -93,8 +93,8 @@ MesherResult MeshLabelImage(const LabelImage& image, const MesherParameters& par
   if (!observer.Report("boundary", 0.9))
     throw AbortRequested{};
   MaterialInterfaces interfaces = ExtractMaterialInterfaces(result.Mesh);
-  result.Boundary = std::move(interfaces.Faces);
-  result.BoundaryMaterials = std::move(interfaces.Sides);
+  result.Interfaces = std::move(interfaces.Faces);
+  result.InterfaceMaterials = std::move(interfaces.Sides);
   clock.Finish("boundary");
   observer.Report("done", 1.0);
   return result;

@@ -27,10 +27,10 @@ struct MesherResult
 {
   /// Every cell of the padded octree domain, background (label 0) included.
   SimplexMesh Mesh;
-  /// Boundary between different materials (background included): triangles in
-  /// 3D, segments in 2D, with the labels on either side.
-  SimplexMesh Boundary;
-  std::vector<std::pair<std::int32_t, std::int32_t>> BoundaryMaterials;
+  /// The interfaces: faces between different materials (background included),
+  /// triangles in 3D, segments in 2D, with the labels on either side.
+  SimplexMesh Interfaces;
+  std::vector<std::pair<std::int32_t, std::int32_t>> InterfaceMaterials;
   std::vector<StageTiming> Timings;
   std::size_t NumberOfLeaves = 0;
 };

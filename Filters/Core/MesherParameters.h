@@ -7,7 +7,7 @@
  * What the user asks of the initial mesh (Algorithm 1's inputs h1, h2). The
  * angle is not a parameter here: the initial mesh's bound (30 degrees in 3D,
  * 45 in 2D) follows from the octree rules and the face tables and is proved
- * by enumeration (Testing/Cxx/TestAngleBoundEnumeration.cxx); the decimator
+ * by enumeration (Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx); the decimator
  * takes the user's angle (Decimation/DecimationParameters.h).
  *
  * Distances are in voxels of the image as meshed (index space: the smallest

@@ -53,6 +53,10 @@ private:
 
 /// Writes `table` as MaterialLabel / MaterialName / MaterialColor (replacing them).
 void StoreMaterialTable(vtkFieldData* fd, const MaterialTable& table);
+/// The table StoreMaterialTable wrote into `fd`, or a VTK file of ours holds (names as NUL-ended
+/// bytes); empty when `fd` has none; names or colours whose arrays are missing or of another
+/// length are left out.
+MaterialTable ReadMaterialTable(vtkFieldData* fd);
 
 } // namespace io
 } // namespace labelmesher

@@ -3,7 +3,7 @@
 // The output of MeshLabelImage (Filters/Core/LabelOctreeMesher.h) does not
 // depend on the number of threads (Support/ParallelChunks.h promises it):
 // Points, Connectivity and Materials of the mesh and of the boundary,
-// BoundaryMaterials and NumberOfLeaves are the same byte for byte with
+// InterfaceMaterials and NumberOfLeaves are the same byte for byte with
 // SetThreadLimit(1) and with 2, 3 and 8 threads (more than this machine's
 // cores, on purpose). The inputs are large enough that the parallel paths
 // run: the octree judges leaves on several threads once the pending leaves
@@ -80,12 +80,12 @@ void ExpectSameOutput(const MesherResult& a, const MesherResult& b, unsigned thr
   EXPECT_TRUE(SameBytes(a.Mesh.Points, b.Mesh.Points)) << "Mesh.Points, " << threads << " threads";
   EXPECT_TRUE(SameBytes(a.Mesh.Connectivity, b.Mesh.Connectivity)) << "Mesh.Connectivity, " << threads << " threads";
   EXPECT_TRUE(SameBytes(a.Mesh.Materials, b.Mesh.Materials)) << "Mesh.Materials, " << threads << " threads";
-  EXPECT_EQ(a.Boundary.Dimension, b.Boundary.Dimension);
-  EXPECT_TRUE(SameBytes(a.Boundary.Points, b.Boundary.Points)) << "Boundary.Points, " << threads << " threads";
-  EXPECT_TRUE(SameBytes(a.Boundary.Connectivity, b.Boundary.Connectivity))
-    << "Boundary.Connectivity, " << threads << " threads";
-  EXPECT_TRUE(SameBytes(a.Boundary.Materials, b.Boundary.Materials)) << "Boundary.Materials, " << threads << " threads";
-  EXPECT_EQ(a.BoundaryMaterials, b.BoundaryMaterials) << "BoundaryMaterials, " << threads << " threads";
+  EXPECT_EQ(a.Interfaces.Dimension, b.Interfaces.Dimension);
+  EXPECT_TRUE(SameBytes(a.Interfaces.Points, b.Interfaces.Points)) << "Interfaces.Points, " << threads << " threads";
+  EXPECT_TRUE(SameBytes(a.Interfaces.Connectivity, b.Interfaces.Connectivity))
+    << "Interfaces.Connectivity, " << threads << " threads";
+  EXPECT_TRUE(SameBytes(a.Interfaces.Materials, b.Interfaces.Materials)) << "Interfaces.Materials, " << threads << " threads";
+  EXPECT_EQ(a.InterfaceMaterials, b.InterfaceMaterials) << "InterfaceMaterials, " << threads << " threads";
 }
 
 /// The face records ExtractMaterialInterfaces sorts (MeshBoundary.h: only
@@ -243,7 +243,7 @@ void ExpectDecimationDoesNotDependOnThreads(const LabelImage& image, const Meshe
     EXPECT_EQ(result.Mesh.Points, reference.Mesh.Points) << threads << " threads";
     EXPECT_EQ(result.Mesh.Connectivity, reference.Mesh.Connectivity) << threads << " threads";
     EXPECT_EQ(result.Mesh.Materials, reference.Mesh.Materials) << threads << " threads";
-    EXPECT_EQ(result.Boundary.Connectivity, reference.Boundary.Connectivity) << threads << " threads";
+    EXPECT_EQ(result.Interfaces.Connectivity, reference.Interfaces.Connectivity) << threads << " threads";
     EXPECT_EQ(result.Counts.Merges, reference.Counts.Merges) << threads << " threads";
     EXPECT_EQ(result.Counts.Offers, reference.Counts.Offers) << threads << " threads";
     EXPECT_EQ(result.Counts.RejectedByQuality, reference.Counts.RejectedByQuality) << threads << " threads";

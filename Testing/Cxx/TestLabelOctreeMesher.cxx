@@ -112,11 +112,11 @@ TEST(LabelOctreeMesher, BoxIsMeshedExactlyAtZeroDistance)
   EXPECT_NEAR(volume[7], 9.0 * 9.0 * 5.0, 1e-9);
   EXPECT_NEAR(volume[0], 16.0 * 16.0 * 16.0 - 9.0 * 9.0 * 5.0, 1e-9); // the octree's cube
   double area = 0.0;
-  ASSERT_EQ(result.BoundaryMaterials.size(), result.Boundary.NumberOfCells());
-  for (std::size_t f = 0; f < result.Boundary.NumberOfCells(); ++f)
+  ASSERT_EQ(result.InterfaceMaterials.size(), result.Interfaces.NumberOfCells());
+  for (std::size_t f = 0; f < result.Interfaces.NumberOfCells(); ++f)
   {
-    area += FaceArea(result.Boundary, f);
-    const auto sides = result.BoundaryMaterials[f];
+    area += FaceArea(result.Interfaces, f);
+    const auto sides = result.InterfaceMaterials[f];
     EXPECT_TRUE((sides.first == 7 && sides.second == 0) || (sides.first == 0 && sides.second == 7));
   }
   EXPECT_NEAR(area, 2.0 * (9 * 9 + 9 * 5 + 9 * 5), 1e-9);
@@ -138,10 +138,10 @@ TEST(LabelOctreeMesher, LabelsTouchingTheImageBorderAreClosed)
         image(i, j, k) = (i < 3) ? 1 : 2;
   const MesherResult result = MeshLabelImage(image, {});
   std::map<std::pair<int, int>, double> area;
-  for (std::size_t f = 0; f < result.Boundary.NumberOfCells(); ++f)
+  for (std::size_t f = 0; f < result.Interfaces.NumberOfCells(); ++f)
   {
-    auto s = result.BoundaryMaterials[f];
-    area[{ std::min(s.first, s.second), std::max(s.first, s.second) }] += FaceArea(result.Boundary, f);
+    auto s = result.InterfaceMaterials[f];
+    area[{ std::min(s.first, s.second), std::max(s.first, s.second) }] += FaceArea(result.Interfaces, f);
   }
   EXPECT_NEAR((area[{ 1, 2 }]), 5.0 * 7.0, 1e-9);
   EXPECT_NEAR((area[{ 0, 1 }]), 2 * (3 * 5 + 3 * 7) + 5 * 7, 1e-9);

@@ -204,6 +204,24 @@ TEST(vtkBezierCurver, BadInputIsOneErrorAndAnEmptyOutput)
     ASSERT_EQ(errors.Messages.size(), 1u);
     EXPECT_NE(errors.Messages[0].find("Material"), std::string::npos) << errors.Messages[0];
   }
+  // A planar mesh with one cell that is not a triangle (a vertex).
+  {
+    vtkNew<vtkLabelOctreeMesher> mesher;
+    mesher->SetInputData(MakeVtkImage(MakeDiscSliceXZ(12, 4.0)));
+    mesher->Update();
+    vtkNew<vtkUnstructuredGrid> mixed;
+    mixed->DeepCopy(mesher->GetOutput());
+    const vtkIdType point = 0;
+    const vtkIdType cell = mixed->InsertNextCell(VTK_VERTEX, 1, &point);
+    mixed->GetCellData()->GetArray(arrays::Material)->InsertTuple1(cell, 1);
+    vtkNew<vtkBezierCurver> curver;
+    curver->SetInputData(mixed);
+    MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+    curver->Update();
+    EXPECT_EQ(curver->GetOutput()->GetNumberOfCells(), 0);
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("is not a triangle (VTK type 1)"), std::string::npos) << errors.Messages[0];
+  }
   // A 3D image on port 1.
   {
     vtkNew<vtkLabelOctreeMesher> mesher;

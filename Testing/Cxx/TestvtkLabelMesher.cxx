@@ -5,7 +5,7 @@
 // measured guarantees), the physical placement, one block equal to
 // vtkLabelOctreeMesher + vtkMeshDecimator, many blocks keeping the measured
 // guarantees, one error and an empty output for bad input, and abort. The
-// core has its own tests (TestStreamedPipeline.cxx).
+// core has its own tests (Streaming/TestStreamedPipeline.cxx).
 
 #include "FilterTestSupport.h"
 
@@ -100,8 +100,8 @@ TEST(vtkLabelMesher, MeshesAndDecimatesWithItsArraysAndFieldData)
   EXPECT_EQ(range[1], 2.0);
   EXPECT_EQ(CountNonPositiveTetrahedra(out), 0);
   EXPECT_EQ(CountUnusedPoints(out), 0);
-  EXPECT_EQ(CountUnusedPoints(mesher->GetBoundaryOutput()), 0);
-  EXPECT_GT(mesher->GetBoundaryOutput()->GetNumberOfPolys(), 0);
+  EXPECT_EQ(CountUnusedPoints(mesher->GetInterfacesOutput()), 0);
+  EXPECT_GT(mesher->GetInterfacesOutput()->GetNumberOfPolys(), 0);
 
   EXPECT_GE(FieldScalar(out, arrays::Blocks), 3.0) << "the image crosses block borders";
   EXPECT_LE(FieldScalar(out, arrays::LargestBlockCells), 3000.0 + 200.0) << "a block closes once it holds 3000 cells";

@@ -53,7 +53,7 @@ TEST(vtkLabelOctreeMesher, PortsTakeImageDataAndGiveAGridAndItsInterfaces)
   mesher->SetInputData(image);
   mesher->Update();
   vtkUnstructuredGrid* grid = mesher->GetOutput();
-  vtkPolyData* interfaces = mesher->GetBoundaryOutput();
+  vtkPolyData* interfaces = mesher->GetInterfacesOutput();
   ASSERT_NE(grid, nullptr);
   ASSERT_NE(interfaces, nullptr);
   ASSERT_GT(grid->GetNumberOfCells(), 0);
@@ -183,8 +183,8 @@ TEST(vtkLabelOctreeMesher, SingleSliceImageGivesTrianglesInItsPlane)
   EXPECT_EQ(bounds[2], 3.0);
   EXPECT_EQ(bounds[3], 3.0);
   EXPECT_GE(Field(grid, arrays::MinimumAngle)->GetComponent(0, 0), 45.0 - 1e-9);
-  EXPECT_GT(mesher->GetBoundaryOutput()->GetNumberOfLines(), 0);
-  EXPECT_EQ(CountUnusedPoints(mesher->GetBoundaryOutput()), 0);
+  EXPECT_GT(mesher->GetInterfacesOutput()->GetNumberOfLines(), 0);
+  EXPECT_EQ(CountUnusedPoints(mesher->GetInterfacesOutput()), 0);
 }
 
 TEST(vtkLabelOctreeMesher, BadInputIsOneErrorAndAnEmptyOutput)

@@ -4,7 +4,7 @@
 // their arrays, the field data (parameters, counts, measured guarantees), the
 // physical placement kept under a reflecting direction matrix, one error and
 // an empty output for each kind of bad input, and abort. The core has its own
-// tests (TestMeshDecimator.cxx, TestDecimatorProperties.cxx).
+// tests (Decimation/TestMeshDecimator.cxx, Decimation/TestDecimatorProperties.cxx).
 
 #include "FilterTestSupport.h"
 
@@ -48,6 +48,18 @@ struct Pipeline
   vtkNew<vtkMeshDecimator> Decimator;
 };
 
+/// The mesher's output with one more cell, a vertex (labelled 1).
+vtkSmartPointer<vtkUnstructuredGrid> WithAVertexCell(vtkAlgorithm* mesher)
+{
+  mesher->Update();
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->DeepCopy(mesher->GetOutputDataObject(0));
+  const vtkIdType point = 0;
+  const vtkIdType cell = grid->InsertNextCell(VTK_VERTEX, 1, &point);
+  grid->GetCellData()->GetArray(labelmesher::arrays::Material)->InsertTuple1(cell, 1);
+  return grid;
+}
+
 } // namespace
 
 TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
@@ -78,7 +90,7 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   EXPECT_EQ(range[1], 1.0);
   EXPECT_EQ(CountNonPositiveTetrahedra(out), 0);
   EXPECT_EQ(CountUnusedPoints(out), 0) << "the background's points go with its cells";
-  EXPECT_EQ(CountUnusedPoints(decimator->GetBoundaryOutput()), 0);
+  EXPECT_EQ(CountUnusedPoints(decimator->GetInterfacesOutput()), 0);
   // Same physical place as the initial mesh: the bounds of the material.
   double before[6], after[6];
   pipeline.Mesher->SetIncludeBackground(false);
@@ -110,10 +122,10 @@ TEST(vtkMeshDecimator, DecimatesTheMesherOutputWithItsArraysAndFieldData)
   ASSERT_NE(names, nullptr);
   EXPECT_EQ(names->GetValue(0), "decimation setup");
 
-  vtkPolyData* interfaces = decimator->GetBoundaryOutput();
+  vtkPolyData* interfaces = decimator->GetInterfacesOutput();
   ASSERT_GT(interfaces->GetNumberOfPolys(), 0);
   EXPECT_NE(interfaces->GetCellData()->GetArray(arrays::Materials), nullptr);
-  EXPECT_LT(interfaces->GetNumberOfPolys(), pipeline.Mesher->GetBoundaryOutput()->GetNumberOfPolys());
+  EXPECT_LT(interfaces->GetNumberOfPolys(), pipeline.Mesher->GetInterfacesOutput()->GetNumberOfPolys());
 
   // Relocation is on by default and is counted; off, no vertex moves and no
   // fewer cells stay (here its moves are all in the background; the core's
@@ -144,7 +156,7 @@ TEST(vtkMeshDecimator, TwoDimensionalImageGivesTrianglesInItsPlane)
   EXPECT_EQ(bounds[3], 3.0);
   EXPECT_GE(FieldScalar(out, arrays::MinimumAngle), 30.0 - 1e-9);
   EXPECT_EQ(CountUnusedPoints(out), 0);
-  EXPECT_EQ(CountUnusedPoints(pipeline.Decimator->GetBoundaryOutput()), 0);
+  EXPECT_EQ(CountUnusedPoints(pipeline.Decimator->GetInterfacesOutput()), 0);
 }
 
 TEST(vtkMeshDecimator, BadInputIsOneErrorAndAnEmptyOutput)
@@ -163,6 +175,8 @@ TEST(vtkMeshDecimator, BadInputIsOneErrorAndAnEmptyOutput)
     { "no background", [](Pipeline& p) { p.Mesher->SetIncludeBackground(false); }, "fill its box" },
     { "angle above the proven bound", [](Pipeline& p) { p.Decimator->SetMinimumAngle(35.0); }, "minimum angle" },
     { "memory limit", [](Pipeline& p) { p.Decimator->SetMemoryLimit(1.0); }, "memory limit of 1 MiB" },
+    { "a cell that is not a tetrahedron", [](Pipeline& p) { p.Decimator->SetInputDataObject(0, WithAVertexCell(p.Mesher)); },
+      "is not a tetrahedron (VTK type 1)" },
   };
   for (const Case& c : cases)
   {

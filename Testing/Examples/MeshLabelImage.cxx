@@ -33,7 +33,7 @@ int main(int argc, char* argv[])
   {
     return 1;
   }
-  // GetBoundaryOutput(): the material interfaces, cell array "Materials" (2 labels)
+  // GetInterfacesOutput(): the material interfaces, cell array "Materials" (2 labels)
   // README:end
   std::cout << mesher->GetOutput()->GetNumberOfCells() << " cells\n";
   return 0;

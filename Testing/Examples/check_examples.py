@@ -5,6 +5,8 @@
   check_examples.py mesh MESH.vtu            asserts the example's mesh keeps the guarantees
                                              its field data records (angle >= 15, both
                                              distance bounds certified, topology per material)
+  check_examples.py gmsh MESH.msh            asserts gmsh -check and meshio read the example's
+                                             Gmsh file: tetrahedra of both materials, named
   check_examples.py picture PICTURE.png      asserts mesh_picture.py drew a mesh and a histogram
   check_examples.py readme README.md FILE... each file's README:begin..end block appears in
                                              the README as it is (the README cannot drift)
@@ -50,6 +52,19 @@ def check_mesh(path):
     matches = fd.GetArray("TopologyMatches")
     assert all(matches.GetTuple1(i) == 1 for i in range(matches.GetNumberOfTuples())), "topology differs"
     print("OK:", mesh.GetNumberOfCells(), "cells, minimum angle", value("MinimumAngle"))
+
+
+def check_gmsh(path):
+    import subprocess
+
+    import meshio  # Debian's python3-meshio
+    check = subprocess.run(["gmsh", path, "-check"], capture_output=True, text=True)
+    assert check.returncode == 0 and "Error" not in check.stdout + check.stderr, check.stdout + check.stderr
+    mesh = meshio.read(path)
+    tags = np.concatenate([t for c, t in zip(mesh.cells, mesh.cell_data["gmsh:physical"]) if c.type == "tetra"])
+    assert sorted(set(tags.tolist())) == [1, 2], sorted(set(tags.tolist()))
+    assert {"label_1", "label_2"} <= set(mesh.field_data), mesh.field_data
+    print("OK:", len(tags), "tetrahedra of materials 1 and 2, gmsh -check passes")
 
 
 def check_picture(path):
@@ -99,6 +114,8 @@ if __name__ == "__main__":
         write_image(sys.argv[2])
     elif command == "mesh":
         check_mesh(sys.argv[2])
+    elif command == "gmsh":
+        check_gmsh(sys.argv[2])
     elif command == "picture":
         check_picture(sys.argv[2])
     else:

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Fuzz target (LLVMFuzzerTestOneInput; built for AFL++ with FileDriver.cxx as main()): the CLI's
-// label-image reader (ReadLabeledImage, ImageReader.h) on arbitrary bytes, saved under a name
+// label-image reader (ReadLabeledImage, Filters/IO/ImageReader.h) on arbitrary bytes, saved under a name
 // ending in LABELMESHER_FUZZ_EXTENSION (.nrrd, .nhdr, .nii, .mha, .vti, .png, .seg.nrrd: one target
 // each). With LABELMESHER_FUZZ_DETACHED (the .nhdr target) the bytes are a detached header and its
 // data file: up to and including the first blank line they are input.nhdr, the rest input.raw, which
@@ -69,7 +69,7 @@ std::size_t HeaderSize(const std::uint8_t* data, std::size_t size)
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-  labelmesher_cli::SilenceVTKOutputWindow();
+  labelmesher::io::SilenceVTKOutputWindow();
   itk::Object::GlobalWarningDisplayOff();
   char folder[] = "/tmp/labelmesher-fuzz-XXXXXX";
   if (!mkdtemp(folder))
@@ -88,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #endif
   try
   {
-    const labelmesher_cli::LabeledImage read = labelmesher_cli::ReadLabeledImage(InputPath());
+    const labelmesher::io::LabeledImage read = labelmesher::io::ReadLabeledImage(InputPath());
     vtkImageData* image = read.Image;
     vtkDataArray* labels = image ? image->GetPointData()->GetScalars() : nullptr;
     if (!labels || std::string(labels->GetName() ? labels->GetName() : "") != "Labels")
@@ -98,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (labels->GetDataType() == VTK_FLOAT || labels->GetDataType() == VTK_DOUBLE)
       Finding("a floating-point label array got through");
   }
-  catch (const labelmesher_cli::InputError&)
+  catch (const labelmesher::io::InputError&)
   {
     // refused with a message: what malformed input must get
   }

@@ -156,7 +156,7 @@ class SphereTest(unittest.TestCase):
         self.assertTrue(np.all(self.points.max(axis=0) <= hi + slack))
 
     def test_boundary_surface_output(self):
-        surface = self.mesher.GetBoundaryOutput()
+        surface = self.mesher.GetInterfacesOutput()
         self.assertGreater(surface.GetNumberOfPolys(), 0)
         materials = vtk_to_numpy(surface.GetCellData().GetArray("Materials"))
         self.assertEqual(materials.shape, (surface.GetNumberOfCells(), 2))
@@ -254,7 +254,7 @@ class OptionsTest(unittest.TestCase):
                 points = vtk_to_numpy(grid.GetPoints().GetData()).astype(float)
                 np.testing.assert_allclose(points[:, normal], origin[normal])
                 self.assertGreaterEqual(triangle_angles(points, tris).min(), PLANAR_BOUND - 1e-6)
-                boundary = mesher.GetBoundaryOutput()
+                boundary = mesher.GetInterfacesOutput()
                 self.assertGreater(boundary.GetNumberOfLines(), 0)
 
 

@@ -24,7 +24,7 @@
  *     point of the larger leaf) or when the larger is proper and the finer's
  *     points land on a face its surface crosses (a rigid face). These are the
  *     configurations outside the enumeration that proves 30 degrees (3D) and
- *     45 degrees (2D) (Testing/Cxx/TestAngleBoundEnumeration.cxx); with the
+ *     45 degrees (2D) (Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx); with the
  *     dissertation's own rules graded faces fall below its claimed 19.47.
  *
  * A kept proper leaf also reports its rigid faces, which rule 4 needs.

@@ -2,6 +2,8 @@
 // Plans and applies one vertex merge of section 3.1.3: the cells that change, vanish and stay.
 #include "Decimation/EdgeCollapse.h"
 
+#include "Mesh/CellFacets.h"
+
 #include <algorithm>
 
 namespace labelmesher
@@ -33,20 +35,15 @@ bool EdgeCollapse::CollectFaces(const EditableMesh& mesh, const std::vector<cons
   for (std::size_t c = 0; c < cells.size(); ++c)
   {
     const auto& cell = *cells[c];
-    for (int skip = 0; skip <= d; ++skip)
+    for (int opposite = 0; opposite <= d; ++opposite)
     {
-      std::array<VertexId, 3> face{ -1, -1, -1 };
-      int n = 0;
+      // The facet touches touchA or touchB unless its opposite vertex is the only one that does.
       bool touches = false;
       for (int i = 0; i <= d; ++i)
-        if (i != skip)
-        {
-          face[n++] = cell[i];
-          touches = touches || cell[i] == touchA || cell[i] == touchB;
-        }
+        touches = touches || (i != opposite && (cell[i] == touchA || cell[i] == touchB));
       if (!touches)
         continue;
-      std::sort(face.begin(), face.begin() + n);
+      const std::array<VertexId, 3> face = SortedFacetOpposite(cell.data(), d, opposite);
       std::size_t h = (static_cast<std::size_t>(face[0]) * 73856093u) ^ (static_cast<std::size_t>(face[1]) * 19349663u) ^
         (static_cast<std::size_t>(face[2] + 1) * 83492791u);
       for (h &= mask;; h = (h + 1) & mask)

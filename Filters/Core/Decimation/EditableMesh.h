@@ -23,6 +23,7 @@
  * disjoint vertex sets may run at once (MeshDecimator.cxx).
  */
 
+#include "Mesh/CellFacets.h"
 #include "Mesh/SimplexMesh.h"
 
 #include <algorithm>
@@ -123,14 +124,9 @@ private:
   {
     scratch.clear();
     for (CellId c : CellsOf[v])
-      for (int skip = 0; skip <= Dimension; ++skip)
+      for (int opposite = 0; opposite <= Dimension; ++opposite)
       {
-        FaceUse use{ { -1, -1, -1 }, c };
-        int n = 0;
-        for (int i = 0; i <= Dimension; ++i)
-          if (i != skip)
-            use.Vertices[n++] = Cells[c][i];
-        std::sort(use.Vertices.begin(), use.Vertices.begin() + n);
+        const FaceUse use{ SortedFacetOpposite(Cells[c].data(), Dimension, opposite), c };
         if (use.Vertices[0] == v)
           scratch.push_back(use);
       }

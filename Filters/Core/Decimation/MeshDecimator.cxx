@@ -500,8 +500,8 @@ void FinishDecimation(const EditableMesh& mesh, DecimationResult& result)
 {
   result.Mesh = mesh.ToSimplexMesh();
   MaterialInterfaces interfaces = ExtractMaterialInterfaces(result.Mesh);
-  result.Boundary = std::move(interfaces.Faces);
-  result.BoundaryMaterials = std::move(interfaces.Sides);
+  result.Interfaces = std::move(interfaces.Faces);
+  result.InterfaceMaterials = std::move(interfaces.Sides);
   result.Counts.CellsAfter = result.Mesh.NumberOfCells();
   result.Counts.VerticesAfter = result.Mesh.Points.size();
 }

@@ -42,9 +42,9 @@ struct DecimationResult
 {
   /// Every cell of the box, background (label 0) included, points in index space.
   SimplexMesh Mesh;
-  /// The faces between different materials, as MesherResult::Boundary.
-  SimplexMesh Boundary;
-  std::vector<std::pair<std::int32_t, std::int32_t>> BoundaryMaterials;
+  /// The interfaces: faces between different materials, as MesherResult::Interfaces.
+  SimplexMesh Interfaces;
+  std::vector<std::pair<std::int32_t, std::int32_t>> InterfaceMaterials;
   DecimationCounts Counts;
   std::vector<StageTiming> Timings;
 };
@@ -54,7 +54,7 @@ struct DecimationResult
 constexpr int kRelocationRounds = 32;
 
 /// The smallest angle (degrees) a decimation may ask for: the initial mesh's
-/// proven bound (Testing/Cxx/TestAngleBoundEnumeration.cxx).
+/// proven bound (Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx).
 double ProvenAngleBound(int dimension);
 
 /// Throws std::invalid_argument, naming the problem, for an angle outside

@@ -2,6 +2,8 @@
 // Extracts the mesh boundary: the faces whose two sides carry different materials.
 #include "Mesh/MeshBoundary.h"
 
+#include "Mesh/CellFacets.h"
+
 #include "Support/ParallelChunks.h"
 
 #include <algorithm>
@@ -85,19 +87,7 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
       {
         if (candidates == n - 1 && candidate[cell[o]])
           continue; // the face without o has a vertex that is not a candidate
-        FaceUse use{ { -1, -1, -1 }, static_cast<std::int64_t>(c), o };
-        int k = 0;
-        for (int i = 0; i < n; ++i)
-          if (i != o)
-            use.Key[k++] = cell[i];
-        // Sort the (two or three) ids: the key must not depend on vertex order.
-        if (use.Key[0] > use.Key[1])
-          std::swap(use.Key[0], use.Key[1]);
-        if (k == 3 && use.Key[1] > use.Key[2])
-          std::swap(use.Key[1], use.Key[2]);
-        if (use.Key[0] > use.Key[1])
-          std::swap(use.Key[0], use.Key[1]);
-        out.push_back(use);
+        out.push_back(FaceUse{ SortedFacetOpposite(cell, mesh.Dimension, o), static_cast<std::int64_t>(c), o });
       }
     }
   });
@@ -144,18 +134,11 @@ MaterialInterfaces ExtractMaterialInterfaces(const SimplexMesh& mesh)
     const std::int32_t outside = use.Other >= 0 ? mesh.Materials[use.Other] : 0;
     if (inside == outside)
       continue;
-    // Orient the face outward from its owner cell: the owner's vertices in
-    // order with the opposite one removed, flipped for odd positions.
-    const std::int64_t* cell = mesh.Cell(use.Owner);
-    std::int64_t f[3] = { -1, -1, -1 };
-    int k = 0;
-    for (int i = 0; i < n; ++i)
-      if (i != use.Opposite)
-        f[k++] = cell[i];
-    const bool flip = mesh.Dimension == 3 ? (use.Opposite % 2 == 1) : (use.Opposite == 1);
-    if (flip)
+    // Oriented outward from its owner cell.
+    std::array<std::int64_t, 3> f = FacetOpposite(mesh.Cell(use.Owner), mesh.Dimension, use.Opposite);
+    if (FacetFlips(mesh.Dimension, use.Opposite))
       std::swap(f[0], f[1]);
-    out.Faces.Connectivity.insert(out.Faces.Connectivity.end(), f, f + k);
+    out.Faces.Connectivity.insert(out.Faces.Connectivity.end(), f.begin(), f.begin() + mesh.Dimension);
     out.Faces.Materials.push_back(inside);
     out.Sides.emplace_back(inside, outside);
   }

@@ -57,6 +57,10 @@ void EnsureMPIInitialized()
     MPI_Initialized(&initialized);
     if (!initialized)
     {
+      // Open MPI prints a line for every optional transport it cannot load (e.g. under ulimit -v)
+      // and then carries on without it: noise around our one-line errors. The user's own
+      // setting, if any, stands.
+      setenv("OMPI_MCA_mca_base_component_show_load_errors", "0", 0);
       MPI_Init(nullptr, nullptr);
       std::atexit([] {
         int finalized = 0;

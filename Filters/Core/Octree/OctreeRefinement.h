@@ -13,7 +13,7 @@
  * larger than a proper boundary face- or edge-neighbour is split: intersection
  * vertices never become quarter points of a larger leaf (the configuration
  * that breaks the dissertation's 19.47 degree claim, and which the angle
- * enumeration, Testing/Cxx/TestAngleBoundEnumeration.cxx, excludes), and the faces a
+ * enumeration, Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx, excludes), and the faces a
  * proper leaf's surface crosses (its rigid faces) never carry points of finer
  * leaves. A proper leaf may meet finer uniform leaves across its other faces
  * and edges: those are filled like a uniform leaf's. Refinement and balance

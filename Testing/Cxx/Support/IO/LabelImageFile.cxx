@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Reads 3D label images with ITK for tests and benchmarks.
+// Reads label images for tests and benchmarks through LabelMesher::IO's checked reader, the one
+// the CLI, the viewer, Python and ParaView use.
 #include "LabelImageFile.h"
 
-#include "itkImage.h"
-#include "itkImageFileReader.h"
+#include "ImageReader.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -16,31 +20,29 @@ namespace testing
 
 LabelImageFile ReadLabelImageFile(const std::string& path)
 {
-  using ImageType = itk::Image<int, 3>;
-  auto reader = itk::ImageFileReader<ImageType>::New();
-  reader->SetFileName(path);
+  vtkSmartPointer<vtkImageData> image;
   try
   {
-    reader->Update();
+    image = io::ReadLabelImage(path);
   }
-  catch (const itk::ExceptionObject& e)
+  catch (const io::InputError& e)
   {
-    throw std::runtime_error("cannot read '" + path + "': " + e.GetDescription());
+    throw std::runtime_error(e.what());
   }
-  const ImageType* image = reader->GetOutput();
-  const auto size = image->GetLargestPossibleRegion().GetSize();
+  int dims[3];
+  image->GetDimensions(dims);
   LabelImageFile result;
-  result.Image = LabelImage(int(size[0]), int(size[1]), int(size[2]));
-  for (int a = 0; a < 3; ++a)
-    result.Spacing[a] = image->GetSpacing()[a];
-  // ITK's buffer is x fastest, like LabelImage.
-  const int* buffer = image->GetBufferPointer();
+  result.Image = LabelImage(dims[0], dims[1], dims[2]);
+  std::copy_n(image->GetSpacing(), 3, result.Spacing.begin());
+  // VTK's point order is x fastest, like LabelImage's.
+  vtkDataArray* labels = image->GetPointData()->GetScalars();
   const std::size_t n = result.Image.NumberOfVoxels();
   for (std::size_t v = 0; v < n; ++v)
   {
-    if (buffer[v] < 0)
+    const double label = labels->GetComponent(static_cast<vtkIdType>(v), 0);
+    if (label < 0)
       throw std::runtime_error("'" + path + "' has negative labels");
-    result.Image.Labels[v] = buffer[v];
+    result.Image.Labels[v] = static_cast<std::int32_t>(label);
   }
   return result;
 }

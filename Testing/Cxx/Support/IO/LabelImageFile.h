@@ -4,11 +4,10 @@
 
 /**
  * @file LabelImageFile.h
- * Test- and benchmark-side input: reads a 3D label image (NRRD, NIfTI, MetaImage) with
- * ITK (itk::ImageFileReader<itk::Image<int, 3>>; VTK 9.1 misreads gzip NRRD)
- * into the core's index-space LabelImage. Spacing is reported but not applied:
- * distances and h are in voxel units, as the core sees them. Kept out of the
- * core on purpose (the core has no I/O and no ITK).
+ * Test- and benchmark-side input: reads a label image (NRRD, NIfTI, MetaImage, VTI, PNG) with
+ * LabelMesher::IO's checked reader (Filters/IO/ImageReader.h, as every front end does) into the
+ * core's index-space LabelImage. Spacing is reported but not applied: distances and h are in
+ * voxel units, as the core sees them. Kept out of the core on purpose (the core has no I/O).
  */
 
 #include "Support/LabelImage.h"
@@ -28,8 +27,8 @@ struct LabelImageFile
   std::array<double, 3> Spacing{ 1, 1, 1 };
 };
 
-/// Throws std::runtime_error when the file cannot be read, is not 3D (a 2D
-/// file is read as nz == 1), or has negative labels.
+/// Throws std::runtime_error (one line) when the reader refuses the file or it has negative
+/// labels. A 2D file is read as nz == 1.
 LabelImageFile ReadLabelImageFile(const std::string& path);
 
 /// The *.nrrd files of `directory`, sorted by name (empty if it does not exist).

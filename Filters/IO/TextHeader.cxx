@@ -15,7 +15,9 @@
 #include <sstream>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace detail
 {
@@ -411,4 +413,5 @@ void CheckMetaImageReadAlike(const std::string& path, itk::ImageIOBase* io, cons
 }
 
 } // namespace detail
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

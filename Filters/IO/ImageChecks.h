@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_ImageChecks_h
-#define labelmesher_cli_ImageChecks_h
+#ifndef labelmesher_io_ImageChecks_h
+#define labelmesher_io_ImageChecks_h
 
 /**
  * @file ImageChecks.h
@@ -8,7 +8,7 @@
  * (ImageReader.cxx, SegmentationReader.cxx): the path is a regular file, the
  * geometry ITK reports is finite with positive spacing, ITK's errors fit one line.
  * The text headers' checks and the truncation check are in TextHeader.h.
- * Internal to the CLI; each throws InputError.
+ * Internal to the readers; each throws InputError.
  */
 
 #include "ImageReader.h"
@@ -26,7 +26,9 @@
 #include <sstream>
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace detail
 {
@@ -139,6 +141,7 @@ inline InputError ITKReadError(const std::string& path, const itk::ExceptionObje
 }
 
 } // namespace detail
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

@@ -13,7 +13,9 @@
 #include <iterator>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -215,4 +217,5 @@ void CheckPngStructure(const std::string& path)
   }
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

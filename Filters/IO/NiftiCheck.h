@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_NiftiCheck_h
-#define labelmesher_cli_NiftiCheck_h
+#ifndef labelmesher_io_NiftiCheck_h
+#define labelmesher_io_NiftiCheck_h
 
 /**
  * @file NiftiCheck.h
@@ -15,13 +15,16 @@
 
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// Throws InputError naming `path` and the first non-finite field; a header it cannot recognise
 /// is left to ITK, which refuses it with its own message.
 void CheckNiftiGeometry(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

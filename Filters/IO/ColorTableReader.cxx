@@ -16,7 +16,9 @@
 #include <sstream>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -81,7 +83,7 @@ std::array<double, 3> ParseRGB(const std::vector<std::string>& words, std::size_
 }
 
 /// ITK-SNAP: IDX R G B A VIS MSH "NAME" (the name may hold spaces, even quotes).
-labelmesher::io::MaterialInfo ParseITKSNAP(const std::string& line)
+MaterialInfo ParseITKSNAP(const std::string& line)
 {
   const std::size_t open = line.find('"');
   const std::size_t close = line.rfind('"');
@@ -90,7 +92,7 @@ labelmesher::io::MaterialInfo ParseITKSNAP(const std::string& line)
   {
     throw LineError{ "" };
   }
-  labelmesher::io::MaterialInfo info;
+  MaterialInfo info;
   info.Label = ParseLabel(words[0]);
   info.Color = ParseRGB(words, 1);
   char* end = nullptr;
@@ -112,14 +114,14 @@ labelmesher::io::MaterialInfo ParseITKSNAP(const std::string& line)
 }
 
 /// 3D Slicer: IDX NAME R G B A (the name without spaces).
-labelmesher::io::MaterialInfo ParseSlicer(const std::string& line)
+MaterialInfo ParseSlicer(const std::string& line)
 {
   const std::vector<std::string> words = Words(line);
   if (words.size() != 6)
   {
     throw LineError{ "" };
   }
-  labelmesher::io::MaterialInfo info;
+  MaterialInfo info;
   info.Label = ParseLabel(words[0]);
   info.Name = words[1];
   info.Color = ParseRGB(words, 2);
@@ -133,7 +135,7 @@ labelmesher::io::MaterialInfo ParseSlicer(const std::string& line)
 
 } // namespace
 
-labelmesher::io::MaterialTable ReadColorTable(const std::string& path)
+MaterialTable ReadColorTable(const std::string& path)
 {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
@@ -150,7 +152,7 @@ labelmesher::io::MaterialTable ReadColorTable(const std::string& path)
     throw InputError("cannot read '" + path + "': " + std::strerror(errno));
   }
 
-  labelmesher::io::MaterialTable table;
+  MaterialTable table;
   std::map<std::int32_t, int> firstLine;
   std::string raw;
   for (int number = 1; std::getline(in, raw); ++number)
@@ -165,7 +167,7 @@ labelmesher::io::MaterialTable ReadColorTable(const std::string& path)
       continue;
     }
     const std::string where = "'" + path + "' line " + std::to_string(number) + ": ";
-    labelmesher::io::MaterialInfo info;
+    MaterialInfo info;
     try
     {
       // Only ITK-SNAP quotes its names.
@@ -198,4 +200,5 @@ labelmesher::io::MaterialTable ReadColorTable(const std::string& path)
   return table;
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

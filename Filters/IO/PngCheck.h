@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_PngCheck_h
-#define labelmesher_cli_PngCheck_h
+#ifndef labelmesher_io_PngCheck_h
+#define labelmesher_io_PngCheck_h
 
 /**
  * @file PngCheck.h
@@ -14,12 +14,15 @@
 
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// Throws InputError naming `path` and the first problem found.
 void CheckPngStructure(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

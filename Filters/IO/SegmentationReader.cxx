@@ -32,7 +32,9 @@
 #include <utility>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -473,7 +475,7 @@ LabeledImage Read(const std::string& path)
   AssignLabels(segments, path, result.Notes);
   for (const Segment& s : segments)
   {
-    labelmesher::io::MaterialInfo info;
+    MaterialInfo info;
     info.Label = s.Merged;
     info.Name = s.Name;
     info.Color = s.Color;
@@ -523,4 +525,5 @@ LabeledImage ReadSegmentation(const std::string& path)
   }
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

@@ -37,7 +37,9 @@
 #include <limits>
 #include <sstream>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -343,4 +345,5 @@ LabeledImage ReadLabeledImage(const std::string& path)
   return result;
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

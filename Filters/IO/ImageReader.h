@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_ImageReader_h
-#define labelmesher_cli_ImageReader_h
+#ifndef labelmesher_io_ImageReader_h
+#define labelmesher_io_ImageReader_h
 
 /**
  * @file ImageReader.h
@@ -26,7 +26,9 @@
 
 class vtkImageData;
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// An input that cannot be meshed; the message is one line.
@@ -42,7 +44,7 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path);
 struct LabeledImage
 {
   vtkSmartPointer<vtkImageData> Image;       ///< scalars named "Labels", as ReadLabelImage gives
-  labelmesher::io::MaterialTable Materials; ///< empty for plain images without --labels
+  MaterialTable Materials; ///< empty for plain images (the CLI adds --labels)
   std::vector<std::string> Notes;            ///< one-line remarks for the user (e.g. labels renumbered)
 };
 
@@ -50,6 +52,7 @@ struct LabeledImage
 /// ReadLabelImage (empty table, no notes). Throws InputError.
 LabeledImage ReadLabeledImage(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

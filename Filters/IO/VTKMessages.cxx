@@ -10,7 +10,9 @@
 
 #include <algorithm>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 VTKMessages::VTKMessages(vtkObject* object, unsigned long event)
@@ -62,4 +64,5 @@ void SilenceVTKOutputWindow()
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

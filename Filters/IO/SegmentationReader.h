@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_SegmentationReader_h
-#define labelmesher_cli_SegmentationReader_h
+#ifndef labelmesher_io_SegmentationReader_h
+#define labelmesher_io_SegmentationReader_h
 
 /**
  * @file SegmentationReader.h
@@ -18,7 +18,9 @@
 
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// True when the name ends in `.seg.nrrd` (any case).
@@ -27,6 +29,7 @@ bool IsSegmentationFile(const std::string& path);
 /// Throws InputError. The scalars are a vtkIntArray named "Labels".
 LabeledImage ReadSegmentation(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

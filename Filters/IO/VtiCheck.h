@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_VtiCheck_h
-#define labelmesher_cli_VtiCheck_h
+#ifndef labelmesher_io_VtiCheck_h
+#define labelmesher_io_VtiCheck_h
 
 /**
  * @file VtiCheck.h
@@ -13,13 +13,16 @@
 
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// Throws InputError naming `path` and the first array whose compression header is wrong. A file
 /// that VTK cannot parse as XML is left to VTK's reader, which reports it.
 void CheckVtiCompressionHeaders(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

@@ -12,7 +12,9 @@
 #include <sstream>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -156,4 +158,5 @@ void CheckNiftiGeometry(const std::string& path)
   }
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

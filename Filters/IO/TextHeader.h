@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_TextHeader_h
-#define labelmesher_cli_TextHeader_h
+#ifndef labelmesher_io_TextHeader_h
+#define labelmesher_io_TextHeader_h
 
 /**
  * @file TextHeader.h
  * One reading of a NRRD (.nrrd, .nhdr) or MetaImage (.mha, .mhd) text header, before ITK
  * parses it: refuses the header lines that Debian's NrrdIO and MetaIO cannot take safely, and
  * keeps what the later checks need (where the voxels are, whether they are raw). Internal to
- * the CLI's readers (ImageReader.cxx, SegmentationReader.cxx); throws InputError.
+ * the readers (ImageReader.cxx, SegmentationReader.cxx); throws InputError.
  */
 
 #include "itkImageIOBase.h"
@@ -16,7 +16,9 @@
 #include <filesystem>
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace detail
 {
@@ -68,6 +70,7 @@ void CheckCompressedVoxels(const std::string& path, itk::ImageIOBase* io, const 
 void CheckMetaImageReadAlike(const std::string& path, itk::ImageIOBase* io, const TextHeader& header);
 
 } // namespace detail
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

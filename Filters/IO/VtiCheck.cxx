@@ -17,7 +17,9 @@
 #include <fstream>
 #include <sstream>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 namespace
 {
@@ -256,4 +258,5 @@ void CheckVtiCompressionHeaders(const std::string& path)
   HeaderChecker(path, in, layout, parser).Check(root, nullptr, "");
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher

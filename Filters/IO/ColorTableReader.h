@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_ColorTableReader_h
-#define labelmesher_cli_ColorTableReader_h
+#ifndef labelmesher_io_ColorTableReader_h
+#define labelmesher_io_ColorTableReader_h
 
 /**
  * @file ColorTableReader.h
- * Reads the names and colours of labels from a text colour table (--labels),
+ * Reads the names and colours of labels from a text colour table (the CLI's --labels),
  * in either of the two forms label images usually come with, told apart line
  * by line (`#` comments and blank lines are skipped):
  *
@@ -21,12 +21,15 @@
 
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// Throws InputError (ImageReader.h), naming the file and line.
-labelmesher::io::MaterialTable ReadColorTable(const std::string& path);
+MaterialTable ReadColorTable(const std::string& path);
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

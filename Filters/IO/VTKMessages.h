@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_VTKMessages_h
-#define labelmesher_cli_VTKMessages_h
+#ifndef labelmesher_io_VTKMessages_h
+#define labelmesher_io_VTKMessages_h
 
 /**
  * @file VTKMessages.h
@@ -17,7 +17,9 @@
 
 class vtkObject;
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 class VTKMessages
@@ -46,6 +48,7 @@ private:
 /// caught by VTKMessages and reported as one line.
 void SilenceVTKOutputWindow();
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

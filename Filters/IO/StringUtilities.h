@@ -1,17 +1,19 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_StringUtilities_h
-#define labelmesher_cli_StringUtilities_h
+#ifndef labelmesher_io_StringUtilities_h
+#define labelmesher_io_StringUtilities_h
 
 /**
  * @file StringUtilities.h
- * The two string helpers the CLI needs for file names.
+ * The string helpers the readers (and the CLI) need for file names and headers.
  */
 
 #include <algorithm>
 #include <cctype>
 #include <string>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace io
 {
 
 /// True when `text` ends with `suffix` (case-sensitive).
@@ -37,6 +39,7 @@ inline std::string Lower(std::string text)
   return text;
 }
 
-} // namespace labelmesher_cli
+} // namespace io
+} // namespace labelmesher
 
 #endif

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The CLI's checked label-image readers (ImageReader.h, SegmentationReader.h, ColorTableReader.h)
+// as a VTK source: the image is read once in RequestInformation, where its extent, spacing and
+// origin are needed, and held until a setting changes.
+#include "vtkLabelImageReader.h"
+
+#include "ColorTableReader.h"
+#include "ImageReader.h"
+#include "MaterialTable.h"
+#include "StringUtilities.h"
+
+#include "vtkDataObject.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMatrix3x3.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <exception>
+#include <new>
+
+vtkStandardNewMacro(vtkLabelImageReader);
+
+vtkLabelImageReader::vtkLabelImageReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkLabelImageReader::~vtkLabelImageReader()
+{
+  this->SetFileName(nullptr);
+  this->SetLabelTableFileName(nullptr);
+}
+
+int vtkLabelImageReader::CanReadFile(const char* fileName)
+{
+  if (!fileName)
+  {
+    return 0;
+  }
+  const std::string lower = labelmesher::io::Lower(fileName);
+  for (const char* suffix : { ".nrrd", ".nhdr", ".nii", ".nii.gz", ".mha", ".mhd", ".vti", ".png" })
+  {
+    if (labelmesher::io::EndsWith(lower, suffix))
+    {
+      return 1;
+    }
+  }
+  return 0;
+}
+
+const char* vtkLabelImageReader::GetNote(int i)
+{
+  return i >= 0 && i < this->GetNumberOfNotes() ? this->Notes[static_cast<std::size_t>(i)].c_str() : nullptr;
+}
+
+bool vtkLabelImageReader::ReadIfChanged()
+{
+  if (this->ImageTime == this->GetMTime())
+  {
+    return this->Image != nullptr; // read (or failed, and said so) with these settings already
+  }
+  this->Image = nullptr;
+  this->Notes.clear();
+  this->ErrorText.clear();
+  try
+  {
+    if (!this->FileName || !*this->FileName)
+    {
+      throw labelmesher::io::InputError("no file name given");
+    }
+    labelmesher::io::LabeledImage read = labelmesher::io::ReadLabeledImage(this->FileName);
+    labelmesher::io::MaterialTable table = read.Materials;
+    if (this->LabelTableFileName && *this->LabelTableFileName)
+    {
+      const labelmesher::io::MaterialTable names = labelmesher::io::ReadColorTable(this->LabelTableFileName);
+      for (const labelmesher::io::MaterialInfo& entry : names.Entries())
+      {
+        table.Set(entry);
+      }
+    }
+    if (!table.Empty())
+    {
+      labelmesher::io::StoreMaterialTable(read.Image->GetFieldData(), table);
+    }
+    this->Image = read.Image;
+    this->Notes = read.Notes;
+  }
+  catch (const std::bad_alloc&)
+  {
+    this->ErrorText = std::string("not enough memory to read '") + (this->FileName ? this->FileName : "") + "'";
+  }
+  catch (const std::exception& e)
+  {
+    this->ErrorText = e.what();
+  }
+  this->ImageTime = this->GetMTime();
+  if (!this->Image)
+  {
+    vtkErrorMacro(<< this->ErrorText);
+    return false;
+  }
+  return true;
+}
+
+int vtkLabelImageReader::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (!this->ReadIfChanged())
+  {
+    // An empty extent, and success: the error was reported once, in one line; failing the
+    // request would add the executive's own multi-line record of it.
+    const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
+    return 1;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Image->GetExtent(), 6);
+  outInfo->Set(vtkDataObject::SPACING(), this->Image->GetSpacing(), 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), this->Image->GetOrigin(), 3);
+  outInfo->Set(vtkDataObject::DIRECTION(), this->Image->GetDirectionMatrix()->GetData(), 9);
+  vtkDataObject::SetPointDataActiveScalarInfo(
+    outInfo, this->Image->GetScalarType(), this->Image->GetNumberOfScalarComponents());
+  return 1;
+}
+
+int vtkLabelImageReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  if (!this->ReadIfChanged())
+  {
+    output->Initialize();
+    return 1;
+  }
+  output->ShallowCopy(this->Image);
+  return 1;
+}
+
+void vtkLabelImageReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "LabelTableFileName: " << (this->LabelTableFileName ? this->LabelTableFileName : "(none)") << "\n";
+  os << indent << "ErrorText: " << this->ErrorText << "\n";
+}

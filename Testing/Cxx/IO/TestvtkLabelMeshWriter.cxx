@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// vtkLabelMeshWriter: the materials' names reach the finite-element files through the filters'
+// field data; the VTK files read back with the same cells; every failed write returns 0, says one
+// line and leaves nothing under the target's name. (meshio and gmsh read every format back in
+// Testing/Python/test_labelmesher_io.py.)
+#include "vtkLabelMeshWriter.h"
+
+#include "FilterTestSupport.h"
+#include "MaterialTable.h"
+#include "ScratchFolder.h"
+#include "vtkLabelMesher.h"
+
+#include "vtkFieldData.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace
+{
+namespace fs = std::filesystem;
+using labelmesher::testing::MessageRecorder;
+
+std::string Slurp(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+std::set<std::string> Listing(const fs::path& folder)
+{
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder))
+    names.insert(entry.path().filename().string());
+  return names;
+}
+
+/// A ball of label 1 in a 14^3 image named "outer shell", meshed by vtkLabelMesher once.
+class WriterTest : public labelmesher::testing::ScratchFolder
+{
+protected:
+  static void SetUpTestSuite()
+  {
+    vtkSmartPointer<vtkImageData> image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(14, 5.0));
+    labelmesher::io::MaterialTable table;
+    labelmesher::io::MaterialInfo shell;
+    shell.Label = 1;
+    shell.Name = "outer shell";
+    shell.Color = { 0.8, 0.3, 0.1 };
+    table.Set(shell);
+    labelmesher::io::StoreMaterialTable(image->GetFieldData(), table);
+    Mesher = vtkLabelMesher::New();
+    Mesher->SetInputData(image);
+    Mesher->Update();
+  }
+  static void TearDownTestSuite() { Mesher->Delete(); }
+
+  /// Write()'s result, with the error events in `errors`.
+  static int Write(const std::string& path, std::vector<std::string>& errors, bool interfaces = true)
+  {
+    vtkNew<vtkLabelMeshWriter> writer;
+    MessageRecorder recorder(writer, vtkCommand::ErrorEvent);
+    writer->SetInputConnection(Mesher->GetOutputPort(0));
+    if (interfaces)
+      writer->SetInterfacesConnection(Mesher->GetOutputPort(1));
+    writer->SetFileName(path.c_str());
+    const int ok = writer->Write();
+    errors = recorder.Messages;
+    if (!errors.empty())
+    {
+      const std::string text = writer->GetErrorText();
+      EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+      EXPECT_NE(errors[0].find(text), std::string::npos) << errors[0];
+    }
+    return ok;
+  }
+
+  static vtkLabelMesher* Mesher;
+};
+vtkLabelMesher* WriterTest::Mesher = nullptr;
+
+TEST(MaterialTable, FieldDataRoundTrip)
+{
+  labelmesher::io::MaterialTable table;
+  labelmesher::io::MaterialInfo a;
+  a.Label = 7;
+  a.Name = "bone";
+  a.Color = { 1, 0.5, 0 };
+  labelmesher::io::MaterialInfo b;
+  b.Label = 2; // no name, no colour
+  table.Set(a);
+  table.Set(b);
+  vtkNew<vtkFieldData> fd;
+  labelmesher::io::StoreMaterialTable(fd, table);
+  const labelmesher::io::MaterialTable back = labelmesher::io::ReadMaterialTable(fd);
+  ASSERT_EQ(back.Entries().size(), 2u);
+  EXPECT_EQ(back.NameOf(7), "bone");
+  EXPECT_EQ(back.NameOf(2), "label_2");
+  EXPECT_FALSE(back.Find(2)->HasColor());
+  EXPECT_DOUBLE_EQ(back.Find(7)->Color[1], 0.5);
+  EXPECT_TRUE(labelmesher::io::ReadMaterialTable(nullptr).Empty());
+}
+
+TEST_F(WriterTest, NamesReachEveryFiniteElementFormat)
+{
+  std::vector<std::string> errors;
+  for (const char* name : { "m.msh", "m.inp", "m.mesh", "m.vtu" })
+  {
+    ASSERT_EQ(Write(this->Path(name), errors), 1) << name;
+    ASSERT_TRUE(errors.empty()) << errors[0];
+  }
+  EXPECT_NE(Slurp(this->Path("m.msh")).find("\"outer shell\""), std::string::npos);
+  EXPECT_NE(Slurp(this->Path("m.inp")).find("ELSET=outer_shell"), std::string::npos);
+  EXPECT_NE(Slurp(this->Path("m.mesh")).find("= outer shell"), std::string::npos);
+
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(this->Path("m.vtu").c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), Mesher->GetOutput()->GetNumberOfCells());
+  EXPECT_GT(reader->GetOutput()->GetNumberOfCells(), 0);
+  const labelmesher::io::MaterialTable table = labelmesher::io::ReadMaterialTable(reader->GetOutput()->GetFieldData());
+  EXPECT_EQ(table.NameOf(1), "outer shell");
+  EXPECT_DOUBLE_EQ(table.Find(1)->Color[0], 0.8);
+}
+
+TEST_F(WriterTest, GmshVersionChoice)
+{
+  vtkNew<vtkLabelMeshWriter> writer;
+  writer->SetInputConnection(Mesher->GetOutputPort(0));
+  writer->SetFileName(this->Path("m.msh").c_str());
+  writer->GmshVersion22On();
+  ASSERT_EQ(writer->Write(), 1) << writer->GetErrorText();
+  EXPECT_EQ(Slurp(this->Path("m.msh")).rfind("$MeshFormat\n2.2 0 8\n", 0), 0u);
+  writer->GmshVersion22Off();
+  ASSERT_EQ(writer->Write(), 1) << writer->GetErrorText();
+  EXPECT_EQ(Slurp(this->Path("m.msh")).rfind("$MeshFormat\n4.1 0 8\n", 0), 0u);
+}
+
+TEST_F(WriterTest, FailedWritesReturnZeroSayOneLineAndLeaveNothing)
+{
+  fs::create_directories(this->Folder / "taken.msh");
+  fs::create_symlink("/dev/full", this->Folder / "full.inp");
+  const std::pair<std::string, std::string> cases[] = {
+    { this->Path("missing/m.msh"), "missing" },
+    { this->Path("taken.msh"), "folder" },
+    { this->Path("full.inp"), "No space left on device" },
+    { this->Path("m.xyz"), "unknown extension" },
+  };
+  for (const auto& [path, fragment] : cases)
+  {
+    const std::set<std::string> before = Listing(this->Folder);
+    std::vector<std::string> errors;
+    EXPECT_EQ(Write(path, errors), 0) << path;
+    ASSERT_EQ(errors.size(), 1u) << path;
+    EXPECT_NE(errors[0].find(fragment), std::string::npos) << errors[0];
+    EXPECT_EQ(Listing(this->Folder), before) << path;
+  }
+  // A surface format without the interfaces on port 1.
+  std::vector<std::string> errors;
+  EXPECT_EQ(Write(this->Path("s.stl"), errors, false), 0);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("interface"), std::string::npos) << errors[0];
+  EXPECT_FALSE(fs::exists(this->Path("s.stl")));
+}
+
+} // namespace

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <vector>
 
 namespace labelmesher_cli
@@ -119,90 +120,203 @@ double ParseTension(const std::string& text)
   return value;
 }
 
+struct Reading;
+void ChooseDecimation(Reading& reading, const std::string& option);
+
+/// What the parser knows while it reads the words: the arguments so far and what was given.
+struct Reading
+{
+  Arguments& Args;
+  std::string CurveOption;        ///< the first curve-only option given
+  std::string DecimateOption;     ///< --decimate or --no-decimate, if given
+  std::set<std::string> Given;    ///< the long names of the options given
+};
+
+/// One option: its names, its value (null for a switch), its help and what it does.
+struct Option
+{
+  const char* Short; ///< "-o", or null
+  const char* Long;  ///< "--output"
+  const char* Value; ///< "FILE", or null: a switch, which takes no value
+  bool CurveOnly;    ///< applies to `curve` only
+  const char* Help;  ///< lines, each after the first continued under the first
+  void (*Apply)(Reading& reading, const std::string& value);
+};
+
+/// Every option, in the order of the help text: the parser and Usage() read this table alone.
+const std::vector<Option>& Options()
+{
+  static const std::vector<Option> options = {
+    { "-o", "--output", "FILE", false,
+      "output file, format by extension; repeat for several\n"
+      "[required]. The mesh with a group per material:\n"
+      "  .vtu  VTK XML         .vtk  VTK legacy (binary)\n"
+      "  .msh  Gmsh 4.1 ASCII  .inp  Abaqus\n"
+      "  .mesh Medit\n"
+      "the interfaces between materials (mesh only):\n"
+      "  .vtp  VTK XML         .stl  binary STL (3D)\n"
+      "  .obj  Wavefront OBJ\n"
+      "curve writes .vtu or .vtk (Bezier cells)",
+      [](Reading& r, const std::string& v) { r.Args.Outputs.push_back(v); } },
+    { nullptr, "--msh-version", "4.1|2.2", false, "Gmsh file version                         [default 4.1]",
+      [](Reading& r, const std::string& v) {
+        if (v != "4.1" && v != "2.2")
+          throw UsageError("--msh-version expects 4.1 or 2.2, got '" + v + "'");
+        r.Args.GmshVersion22 = v == "2.2";
+      } },
+    { nullptr, "--stl-per-interface", nullptr, false, "one .stl per pair of materials, STEM_NAMEA_NAMEB.stl",
+      [](Reading& r, const std::string&) { r.Args.StlPerInterface = true; } },
+    { nullptr, "--labels", "FILE", false,
+      "material names (and colours) from an ITK-SNAP label\n"
+      "description or a 3D Slicer colour table; without it\n"
+      "materials are named label_N (or by the .seg.nrrd)",
+      [](Reading& r, const std::string& v) { r.Args.Labels = v; } },
+    { nullptr, "--image-to-mesh", "H1", false,
+      "h(I,M) bound: image boundary to mesh boundary, in voxels\n"
+      "of the smallest spacing                        [default 2]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.ImageToMeshDistance = ParseDistance("--image-to-mesh", v); } },
+    { nullptr, "--mesh-to-image", "H2", false,
+      "h(M,I) bound: mesh boundary to image boundary, in voxels\n"
+      "of the smallest spacing                        [default 2]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.MeshToImageDistance = ParseDistance("--mesh-to-image", v); } },
+    { nullptr, "--hausdorff", "H", false, "set both bounds to H voxels",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.ImageToMeshDistance = r.Args.Settings.MeshToImageDistance = ParseDistance("--hausdorff", v);
+      } },
+    { nullptr, "--report", "FILE.json", false, "write the summary as JSON",
+      [](Reading& r, const std::string& v) { r.Args.Report = v; } },
+    { nullptr, "--min-angle", "DEG", false,
+      "smallest angle the decimator may create, degrees:\n"
+      "(0, 30] in 3D, (0, 45] in 2D                [default 15]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
+    { nullptr, "--no-decimate", nullptr, false, "keep the initial mesh (angles >= 30 3D, 45 2D)",
+      [](Reading& r, const std::string&) { ChooseDecimation(r, "--no-decimate"); } },
+    { nullptr, "--decimate", nullptr, false, "decimate (the default)",
+      [](Reading& r, const std::string&) { ChooseDecimation(r, "--decimate"); } },
+    { nullptr, "--no-relocate", nullptr, false,
+      "merges only: do not move interior vertices between\n"
+      "rounds of merges (more cells; the dissertation's way)",
+      [](Reading& r, const std::string&) { r.Args.Settings.RelocateInteriorVertices = false; } },
+    { nullptr, "--include-background", nullptr, false, "keep the cells of label 0",
+      [](Reading& r, const std::string&) { r.Args.Settings.IncludeBackground = true; } },
+    { nullptr, "--no-measure", nullptr, false,
+      "do not measure the output (angles, distances,\n"
+      "conformity, topology); saves 1-2x the meshing time",
+      [](Reading& r, const std::string&) { r.Args.Settings.Measure = false; } },
+    { nullptr, "--block-cells", "N", false,
+      "initial cells per block: the mesh is made and decimated\n"
+      "block by block, so that peak memory follows one block\n"
+      "and the output; 0: one block (k, M: 500k, 2M)  [default 1M]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.BlockCells = ParseBlockCells(v); } },
+    { nullptr, "--max-memory", "SIZE", false,
+      "the most memory the run may hold, MiB or with M/G\n"
+      "(900M, 1.5G); a run estimated not to fit it (or the\n"
+      "machine's available memory, ulimit -v) is refused\n"
+      "before it starts          [default: the machine's]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.MemoryLimit = ParseMemory(v); } },
+    { "-q", "--quiet", nullptr, false, "no progress bar, no summary (errors only)",
+      [](Reading& r, const std::string&) { r.Args.Quiet = true; } },
+    { nullptr, "--smoothness", "1|2", true,
+      "continuity of the curved boundaries: C1, fitted\n"
+      "to the image, or C2, through the vertices   [default 1]",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.Smoothness = ParseCount("--smoothness", v, 1);
+        if (r.Args.Settings.Smoothness > 2)
+          throw UsageError("--smoothness expects 1 (C1) or 2 (C2)");
+      } },
+    { nullptr, "--tension", "T", true,
+      "C1 tangent handle length factor in [0, 1] the fit\n"
+      "is pulled towards (1/3: Catmull-Rom, 0: straight)\n"
+      "                                            [default 0.3333]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.Tension = ParseTension(v); } },
+    { nullptr, "--max-untangling-steps", "N", true, "most load fractions of the elastic untangling [default 64]",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.MaximumUntanglingSteps = ParseCount("--max-untangling-steps", v, 1);
+      } },
+    { nullptr, "--max-shortening-rounds", "N", true,
+      "most untangling rounds, each after shortening the\n"
+      "curves of the cells left invalid            [default 8]",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.MaximumShorteningRounds = ParseCount("--max-shortening-rounds", v, 1);
+      } },
+    { nullptr, "--quality-iterations", "N", true,
+      "further fraction doublings kept when the worst\n"
+      "scaled Jacobian improves                    [default 0]",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.QualityIterations = ParseCount("--quality-iterations", v, 0);
+      } },
+    { "-h", "--help", nullptr, false, "this text", [](Reading& r, const std::string&) { r.Args.Help = true; } },
+    { nullptr, "--version", nullptr, false, "print the version",
+      [](Reading& r, const std::string&) { r.Args.Version = true; } },
+  };
+  return options;
+}
+
+void ChooseDecimation(Reading& reading, const std::string& option)
+{
+  if (!reading.DecimateOption.empty() && reading.DecimateOption != option)
+  {
+    throw UsageError("--decimate and --no-decimate contradict each other");
+  }
+  reading.DecimateOption = option;
+}
+
+const Option* FindOption(const std::string& word)
+{
+  for (const Option& option : Options())
+    if (word == option.Long || (option.Short && word == option.Short))
+      return &option;
+  return nullptr;
+}
+
 } // namespace
 
 std::string Usage()
 {
-  return "Usage: labelmesher mesh INPUT -o OUTPUT [options]\n"
-         "       labelmesher curve INPUT2D -o OUTPUT [options]\n"
-         "\n"
-         "mesh:  meshes a label image (integer labels, 0 = background) into labelled\n"
-         "       tetrahedra (3D) or triangles (2D images) with bounded angles, bounded\n"
-         "       Hausdorff distance and the image's topology per material, then decimates\n"
-         "       the mesh within the same bounds (fewer cells).\n"
-         "curve: meshes and decimates a 2D label image as above, then curves the\n"
-         "       triangles into cubic Bezier triangles (VTK_BEZIER_TRIANGLE) with C1\n"
-         "       (fitted to the image) or C2 smooth material boundaries that keep both\n"
-         "       distance bounds, every cell proven valid; reports validity, the scaled\n"
-         "       Jacobian histogram, the curves' distances and crossings, and pixel\n"
-         "       accuracy of the linear vs the curved mesh.\n"
-         "\n"
-         "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel),\n"
-         "        .seg.nrrd (3D Slicer segmentation: segment names, colours, layers)\n"
-         "\n"
-         "Options:\n"
-         "  -o, --output FILE          output file, format by extension; repeat for several\n"
-         "                             [required]. The mesh with a group per material:\n"
-         "                               .vtu  VTK XML         .vtk  VTK legacy (binary)\n"
-         "                               .msh  Gmsh 4.1 ASCII  .inp  Abaqus\n"
-         "                               .mesh Medit\n"
-         "                             the interfaces between materials (mesh only):\n"
-         "                               .vtp  VTK XML         .stl  binary STL (3D)\n"
-         "                               .obj  Wavefront OBJ\n"
-         "                             curve writes .vtu or .vtk (Bezier cells)\n"
-         "  --msh-version 4.1|2.2      Gmsh file version                         [default 4.1]\n"
-         "  --stl-per-interface        one .stl per pair of materials, STEM_NAMEA_NAMEB.stl\n"
-         "  --labels FILE              material names (and colours) from an ITK-SNAP label\n"
-         "                             description or a 3D Slicer colour table; without it\n"
-         "                             materials are named label_N (or by the .seg.nrrd)\n"
-         "  --image-to-mesh H1         h(I,M) bound: image boundary to mesh boundary, in voxels\n"
-         "                             of the smallest spacing                        [default 2]\n"
-         "  --mesh-to-image H2         h(M,I) bound: mesh boundary to image boundary, in voxels\n"
-         "                             of the smallest spacing                        [default 2]\n"
-         "  --hausdorff H              set both bounds to H voxels\n"
-         "  --report FILE.json         write the summary as JSON\n"
-         "  --min-angle DEG            smallest angle the decimator may create, degrees:\n"
-         "                             (0, 30] in 3D, (0, 45] in 2D                [default 15]\n"
-         "  --no-decimate              keep the initial mesh (angles >= 30 3D, 45 2D)\n"
-         "  --decimate                 decimate (the default)\n"
-         "  --no-relocate              merges only: do not move interior vertices between\n"
-         "                             rounds of merges (more cells; the dissertation's way)\n"
-         "  --include-background       keep the cells of label 0\n"
-         "  --no-measure               do not measure the output (angles, distances,\n"
-         "                             conformity, topology); saves 1-2x the meshing time\n"
-         "  --block-cells N            initial cells per block: the mesh is made and decimated\n"
-         "                             block by block, so that peak memory follows one block\n"
-         "                             and the output; 0: one block (k, M: 500k, 2M)  [default 1M]\n"
-         "  --max-memory SIZE          the most memory the run may hold, MiB or with M/G\n"
-         "                             (900M, 1.5G); a run estimated not to fit it (or the\n"
-         "                             machine's available memory, ulimit -v) is refused\n"
-         "                             before it starts          [default: the machine's]\n"
-         "  -q, --quiet                no progress bar, no summary (errors only)\n"
-         "curve options:\n"
-         "  --smoothness 1|2           continuity of the curved boundaries: C1, fitted\n"
-         "                             to the image, or C2, through the vertices   [default 1]\n"
-         "  --tension T                C1 tangent handle length factor in [0, 1] the fit\n"
-         "                             is pulled towards (1/3: Catmull-Rom, 0: straight)\n"
-         "                                                                         [default 0.3333]\n"
-         "  --max-untangling-steps N   most load fractions of the elastic untangling [default 64]\n"
-         "  --max-shortening-rounds N  most untangling rounds, each after shortening the\n"
-         "                             curves of the cells left invalid            [default 8]\n"
-         "  --quality-iterations N     further fraction doublings kept when the worst\n"
-         "                             scaled Jacobian improves                    [default 0]\n"
-         "  -h, --help                 this text\n"
-         "  --version                  print the version\n";
+  std::string text = "Usage: labelmesher mesh INPUT -o OUTPUT [options]\n"
+                     "       labelmesher curve INPUT2D -o OUTPUT [options]\n"
+                     "\n"
+                     "mesh:  meshes a label image (integer labels, 0 = background) into labelled\n"
+                     "       tetrahedra (3D) or triangles (2D images) with bounded angles, bounded\n"
+                     "       Hausdorff distance and the image's topology per material, then decimates\n"
+                     "       the mesh within the same bounds (fewer cells).\n"
+                     "curve: meshes and decimates a 2D label image as above, then curves the\n"
+                     "       triangles into cubic Bezier triangles (VTK_BEZIER_TRIANGLE) with C1\n"
+                     "       (fitted to the image) or C2 smooth material boundaries that keep both\n"
+                     "       distance bounds, every cell proven valid; reports validity, the scaled\n"
+                     "       Jacobian histogram, the curves' distances and crossings, and pixel\n"
+                     "       accuracy of the linear vs the curved mesh.\n"
+                     "\n"
+                     "INPUT   .nrrd/.nhdr, .nii/.nii.gz, .mha/.mhd (ITK), .vti, .png (single channel),\n"
+                     "        .seg.nrrd (3D Slicer segmentation: segment names, colours, layers)\n"
+                     "\n"
+                     "Options:\n";
+  constexpr std::size_t column = 29; // where the help starts
+  bool curveHeader = false;
+  for (const Option& option : Options())
+  {
+    if (option.CurveOnly && !curveHeader)
+    {
+      text += "curve options:\n";
+      curveHeader = true;
+    }
+    std::string names = std::string("  ") + (option.Short ? std::string(option.Short) + ", " : "") + option.Long +
+      (option.Value ? std::string(" ") + option.Value : "");
+    names.resize(std::max(column, names.size() + 1), ' ');
+    std::string help = option.Help;
+    for (std::size_t at = help.find('\n'); at != std::string::npos; at = help.find('\n', at + 1 + column))
+      help.insert(at + 1, column, ' ');
+    text += names + help + "\n";
+  }
+  return text;
 }
 
 Arguments ParseArguments(int argc, const char* const* argv)
 {
   Arguments args;
+  Reading reading{ args, {}, {}, {} };
   std::vector<std::string> words(argv + 1, argv + argc);
   std::vector<std::string> positional;
-  std::string curveOption; // first curve-only option seen
-  bool minAngleGiven = false;
-  bool noRelocateGiven = false;
-  bool blockCellsGiven = false;
-  std::string decimateOption; // --decimate or --no-decimate, if given
   for (std::size_t w = 0; w < words.size(); ++w)
   {
     std::string word = words[w];
@@ -218,154 +332,36 @@ Arguments ParseArguments(int argc, const char* const* argv)
         hasInlineValue = true;
       }
     }
-    auto takeValue = [&]() -> std::string {
-      if (hasInlineValue)
+    const Option* option = FindOption(word);
+    if (!option)
+    {
+      if (word.size() > 1 && word[0] == '-')
       {
-        return value;
+        throw UsageError("unknown option " + word);
       }
+      positional.push_back(word);
+      continue;
+    }
+    if (!option->Value && hasInlineValue)
+    {
+      throw UsageError(word + " takes no value");
+    }
+    if (option->Value && !hasInlineValue)
+    {
       if (w + 1 >= words.size())
       {
         throw UsageError(word + " needs a value");
       }
-      return words[++w];
-    };
-    auto noValue = [&]() {
-      if (hasInlineValue)
-      {
-        throw UsageError(word + " takes no value");
-      }
-    };
-
-    if (word == "-h" || word == "--help")
-    {
-      noValue();
-      args.Help = true;
+      value = words[++w];
     }
-    else if (word == "--version")
+    if (option->CurveOnly && reading.CurveOption.empty())
     {
-      noValue();
-      args.Version = true;
+      reading.CurveOption = word;
     }
-    else if (word == "-o" || word == "--output")
-    {
-      args.Outputs.push_back(takeValue());
-    }
-    else if (word == "--labels")
-    {
-      args.Labels = takeValue();
-    }
-    else if (word == "--msh-version")
-    {
-      const std::string version = takeValue();
-      if (version != "4.1" && version != "2.2")
-      {
-        throw UsageError("--msh-version expects 4.1 or 2.2, got '" + version + "'");
-      }
-      args.GmshVersion22 = version == "2.2";
-    }
-    else if (word == "--stl-per-interface")
-    {
-      noValue();
-      args.StlPerInterface = true;
-    }
-    else if (word == "--report")
-    {
-      args.Report = takeValue();
-    }
-    else if (word == "--image-to-mesh")
-    {
-      args.Settings.ImageToMeshDistance = ParseDistance(word, takeValue());
-    }
-    else if (word == "--mesh-to-image")
-    {
-      args.Settings.MeshToImageDistance = ParseDistance(word, takeValue());
-    }
-    else if (word == "--hausdorff")
-    {
-      args.Settings.ImageToMeshDistance = args.Settings.MeshToImageDistance = ParseDistance(word, takeValue());
-    }
-    else if (word == "--include-background")
-    {
-      noValue();
-      args.Settings.IncludeBackground = true;
-    }
-    else if (word == "--smoothness")
-    {
-      curveOption = curveOption.empty() ? word : curveOption;
-      args.Settings.Smoothness = ParseCount(word, takeValue(), 1);
-      if (args.Settings.Smoothness > 2)
-      {
-        throw UsageError("--smoothness expects 1 (C1) or 2 (C2)");
-      }
-    }
-    else if (word == "--tension")
-    {
-      curveOption = curveOption.empty() ? word : curveOption;
-      args.Settings.Tension = ParseTension(takeValue());
-    }
-    else if (word == "--max-untangling-steps")
-    {
-      curveOption = curveOption.empty() ? word : curveOption;
-      args.Settings.MaximumUntanglingSteps = ParseCount(word, takeValue(), 1);
-    }
-    else if (word == "--max-shortening-rounds")
-    {
-      curveOption = curveOption.empty() ? word : curveOption;
-      args.Settings.MaximumShorteningRounds = ParseCount(word, takeValue(), 1);
-    }
-    else if (word == "--quality-iterations")
-    {
-      curveOption = curveOption.empty() ? word : curveOption;
-      args.Settings.QualityIterations = ParseCount(word, takeValue(), 0);
-    }
-    else if (word == "--min-angle")
-    {
-      args.Settings.MinimumAngle = ParseAngle(takeValue());
-      minAngleGiven = true;
-    }
-    else if (word == "--no-relocate")
-    {
-      noValue();
-      args.Settings.RelocateInteriorVertices = false;
-      noRelocateGiven = true;
-    }
-    else if (word == "--no-decimate" || word == "--decimate")
-    {
-      noValue();
-      if (!decimateOption.empty() && decimateOption != word)
-      {
-        throw UsageError("--decimate and --no-decimate contradict each other");
-      }
-      decimateOption = word;
-    }
-    else if (word == "--block-cells")
-    {
-      args.Settings.BlockCells = ParseBlockCells(takeValue());
-      blockCellsGiven = true;
-    }
-    else if (word == "--max-memory")
-    {
-      args.Settings.MemoryLimit = ParseMemory(takeValue());
-    }
-    else if (word == "--no-measure")
-    {
-      noValue();
-      args.Settings.Measure = false;
-    }
-    else if (word == "--quiet" || word == "-q")
-    {
-      noValue();
-      args.Quiet = true;
-    }
-    else if (word.size() > 1 && word[0] == '-')
-    {
-      throw UsageError("unknown option " + word);
-    }
-    else
-    {
-      positional.push_back(word);
-    }
+    reading.Given.insert(option->Long);
+    option->Apply(reading, value);
   }
+  const auto given = [&](const char* name) { return reading.Given.count(name) > 0; };
   if (args.Help || args.Version)
   {
     return args;
@@ -380,22 +376,22 @@ Arguments ParseArguments(int argc, const char* const* argv)
   }
   args.Command = positional[0];
   args.Settings.Curve = args.Command == "curve";
-  args.Settings.Decimate = decimateOption.empty() || decimateOption == "--decimate";
-  if (noRelocateGiven && !args.Settings.Decimate)
+  args.Settings.Decimate = reading.DecimateOption.empty() || reading.DecimateOption == "--decimate";
+  if (given("--no-relocate") && !args.Settings.Decimate)
   {
     throw UsageError("--no-relocate is a decimator option: it cannot go with --no-decimate");
   }
-  if (blockCellsGiven && !args.Settings.Decimate)
+  if (given("--block-cells") && !args.Settings.Decimate)
   {
     throw UsageError("--block-cells streams mesher and decimator: it cannot go with --no-decimate");
   }
-  if (minAngleGiven && !args.Settings.Decimate)
+  if (given("--min-angle") && !args.Settings.Decimate)
   {
     throw UsageError("--min-angle is the decimator's bound: it cannot go with --no-decimate");
   }
-  if (args.Command == "mesh" && !curveOption.empty())
+  if (args.Command == "mesh" && !reading.CurveOption.empty())
   {
-    throw UsageError(curveOption + " applies to 'curve' only");
+    throw UsageError(reading.CurveOption + " applies to 'curve' only");
   }
   if (positional.size() < 2)
   {

@@ -21,9 +21,9 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXEC
 # Only what the unit, CLI and property tests run: the C++ test programs, the CLI and the scan
 # (not the example program, whose tests this script does not run).
 targets=(labelmesher labelmesher_property_scan)
-for source in Testing/Cxx/Test*.cxx; do
+while IFS= read -r source; do
   targets+=("$(basename "$source" .cxx)")
-done
+done < <(find Testing/Cxx -name 'Test*.cxx' | sort)
 cmake --build "$build" -j "${LABELMESHER_JOBS:-2}" --target "${targets[@]}"
 
 reports="$PWD/$build/reports"

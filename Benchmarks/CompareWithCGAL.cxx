@@ -25,6 +25,8 @@
 // The last line is machine-readable:
 //   SUMMARY name t_ours t_cgal cells_ours cells_cgal mindih_ours mindih_cgal
 //           hIM_ours hIM_cgal hMI_ours hMI_cgal topo_ours topo_cgal peakMiB_ours peakMiB_cgal
+#include "MPIStartup.h"
+#include "Octree/OctreeRefinement.h"
 #include "BenchmarkSupport.h"
 #include "CGALImageMesher.h"
 #include "Decimation/MeshDecimator.h"
@@ -145,6 +147,7 @@ void Row(const std::string& what, const std::string& ours, const std::string& cg
 
 int main(int argc, char** argv)
 {
+  labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   benchmarks::CGALMeshOptions cgal;
   double h = 2.0, minimumAngle = 15.0;
   bool decimate = true;

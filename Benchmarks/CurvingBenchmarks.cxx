@@ -6,6 +6,8 @@
 // 2D label images, and a batch of random 2D images. The peer figure is our own
 // linear mesher on the same image in the same run: `curve/mesh` is the curving
 // time over the linear meshing time. See README.md.
+#include "MPIStartup.h"
+#include "Octree/OctreeRefinement.h"
 #include "Curving/BezierCurver.h"
 #include "Curving/CurvedMeshLocator.h"
 #include "Decimation/MeshDecimator.h"
@@ -206,6 +208,7 @@ void RegisterAll()
 
 int main(int argc, char** argv)
 {
+  labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv))
     return 1;

@@ -15,6 +15,8 @@
 // those rows, in the order given, for the full size, where the whole table
 // takes hours.
 
+#include "MPIStartup.h"
+#include "Octree/OctreeRefinement.h"
 #include "BenchmarkSupport.h"
 #include "Decimation/MeshDecimator.h"
 #include "LabelOctreeMesher.h"
@@ -63,6 +65,7 @@ std::string Thousands(long n)
 
 int main(int argc, char** argv)
 {
+  labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   int n = 400;
   MergeOrder order = MergeOrder::ShortestEdgeFirst;
   bool relocate = true;

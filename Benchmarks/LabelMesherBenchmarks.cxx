@@ -6,6 +6,8 @@
 // of dissertation section 5.1.1 (100..400 voxels a side), on the shared real label
 // volumes and on a batch of random property-test images. See Benchmarks/README.md
 // for what each counter means.
+#include "MPIStartup.h"
+#include "Octree/OctreeRefinement.h"
 #include "BenchmarkSupport.h"
 #include "Checks/MeshChecks.h"
 #include "Decimation/MeshDecimator.h"
@@ -408,6 +410,7 @@ void RegisterAll()
 
 int main(int argc, char** argv)
 {
+  labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv))
     return 1;

@@ -2,6 +2,8 @@
 // What the machine lets this process still allocate, and the refusal line.
 #include "MemoryBudget.h"
 
+#include "MPIStartup.h"
+
 #include "Support/MemoryEstimate.h"
 
 #include <fstream>
@@ -97,9 +99,11 @@ MemoryBudget AvailableMemory(double limitMiB)
   {
     // Address space, not resident memory: threads' stacks and malloc arenas
     // count too, so a run that passes may still stop, with one line, out of memory.
-    const std::uint64_t size = ProcField("/proc/self/status", "VmSize");
+    // MPI's start, when it is still to come, takes its share first (MPIStartup.h).
+    const std::uint64_t size = ProcField("/proc/self/status", "VmSize") + MPIStartAddressSpace();
     const std::uint64_t limit = address.rlim_cur;
-    Lower(budget, limit > size ? limit - size : 0, "ulimit -v");
+    Lower(budget, limit > size ? limit - size : 0,
+      MPIRunning() ? "ulimit -v" : "ulimit -v, less " + FormatMiB(MPIStartAddressSpace()) + " to start MPI");
   }
 #endif
   return budget;

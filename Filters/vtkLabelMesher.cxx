@@ -3,6 +3,7 @@
 #include "vtkLabelMesher.h"
 
 #include "FilterSupport.h"
+#include "MPIStartup.h"
 #include "LabelImageConversion.h"
 #include "LabelMesherArrayNames.h"
 #include "MemoryBudget.h"
@@ -126,6 +127,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
 
   const double share = this->MeasureOutput ? 0.8 : 1.0;
   labelmesher::StreamedResult result;
+  labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
   try
   {
     result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, share));

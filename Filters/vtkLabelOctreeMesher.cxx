@@ -4,6 +4,7 @@
 #include "vtkLabelOctreeMesher.h"
 
 #include "FilterSupport.h"
+#include "MPIStartup.h"
 #include "LabelImageConversion.h"
 #include "LabelMesherArrayNames.h"
 #include "LabelOctreeMesher.h"
@@ -119,6 +120,7 @@ int vtkLabelOctreeMesher::RequestData(
   parameters.ImageToMeshDistance = this->ImageToMeshDistance;
   parameters.MeshToImageDistance = this->MeshToImageDistance;
   labelmesher::MesherResult result;
+  labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
   try
   {
     result = labelmesher::MeshLabelImage(image, parameters, labelmesher::ForwardProgress(this, 0.0, meshShare));

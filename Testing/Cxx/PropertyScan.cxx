@@ -27,6 +27,8 @@
 // thin: GenerateThinFeatureImage(seed, dimension, SIZE) (default 20 in 2D, 12 in 3D).
 // Distance bounds: DrawDistanceBounds(seed), as in the tests.
 
+#include "MPIStartup.h"
+#include "Octree/OctreeRefinement.h"
 #include "CurverGuarantees.h"
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
@@ -44,6 +46,7 @@ using namespace labelmesher;
 
 int main(int argc, char** argv)
 {
+  labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   const bool curve = argc > 1 && std::string(argv[1]) == "--curve";
   const bool streamed = argc > 2 && std::string(argv[1]) == "--streamed";
   const bool decimate = curve || streamed || (argc > 1 && std::string(argv[1]) == "--decimate");

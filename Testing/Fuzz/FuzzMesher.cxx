@@ -9,6 +9,7 @@
 // A violated guarantee is a finding (abort, so libFuzzer keeps the input).
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
+#include "MPIStartup.h"
 #include "Octree/OctreeRefinement.h"
 
 #include <algorithm>
@@ -23,7 +24,7 @@ using namespace labelmesher;
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
   // MPI (p4est's) starts once, before the first input: what it keeps is not the input's leak.
-  detail::EnsureMPIInitialized();
+  StartMPI(); // the application's start-up (Filters/MPIStartup.h); the core starts nothing
   return 0;
 }
 

@@ -45,31 +45,31 @@ void ThrowOnLibscAbort()
 }
 } // namespace
 
-void EnsureMPIInitialized()
+MPIStarter& RegisteredStarter()
 {
-  // A plain process may call MPI_Init itself (a singleton start, about 0.3 s
-  // once); under mpirun or pvbatch MPI is already up and is left alone.
+  static MPIStarter starter = nullptr;
+  return starter;
+}
+
+void InitializeP4est()
+{
   static std::once_flag once;
-  // A libsc built without MPI (the Slicer extension's) has MPI stubs and nothing to start.
   std::call_once(once, [] {
 #ifdef SC_ENABLE_MPI
+    // MPI start-up is the application's: under mpirun or pvbatch MPI is up already; a plain
+    // process has it started by the starter its front end registered (SetMPIStarter).
     int initialized = 0;
     MPI_Initialized(&initialized);
-    if (!initialized)
+    if (!initialized && RegisteredStarter())
     {
-      // Open MPI prints a line for every optional transport it cannot load (e.g. under ulimit -v)
-      // and then carries on without it: noise around our one-line errors. The user's own
-      // setting, if any, stands.
-      setenv("OMPI_MCA_mca_base_component_show_load_errors", "0", 0);
-      MPI_Init(nullptr, nullptr);
-      std::atexit([] {
-        int finalized = 0;
-        MPI_Finalized(&finalized);
-        if (!finalized)
-          MPI_Finalize();
-      });
+      RegisteredStarter()();
+      MPI_Initialized(&initialized);
     }
+    if (!initialized)
+      throw std::logic_error("MPI is not running: start it before meshing (labelmesher::StartMPI, "
+                             "Filters/MPIStartup.h), or register a starter with SetMPIStarter");
 #endif
+    // A libsc built without MPI (the Slicer extension's) has MPI stubs and nothing to start.
     sc_init(sc_MPI_COMM_SELF, 0, 0, KeepLibscMessage, SC_LP_ERROR);
     p4est_init(KeepLibscMessage, SC_LP_ERROR);
     sc_set_abort_handler(ThrowOnLibscAbort);
@@ -77,6 +77,11 @@ void EnsureMPIInitialized()
 }
 
 } // namespace detail
+
+void SetMPIStarter(MPIStarter starter)
+{
+  detail::RegisteredStarter() = starter;
+}
 
 int OctreeDepth(const LabelImage& image)
 {

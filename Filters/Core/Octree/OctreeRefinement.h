@@ -52,11 +52,21 @@ int OctreeDepth(const LabelImage& image);
 std::vector<OctreeLeaf> BuildOctree(int dimension, int depth, const LeafEvaluator& evaluate,
   const ProgressObserver& observer, double progressStart, double progressEnd);
 
+/// Starts MPI for a process that runs without mpirun (Filters/MPIStartup.h: StartMPI).
+using MPIStarter = void (*)();
+/// MPI start-up belongs to the application, never to the core: the forest needs MPI running
+/// (p4est's communicator), and when it is not, it calls the starter registered here, once; with
+/// none it throws std::logic_error. The filters start MPI themselves before they mesh; programs
+/// that call the core directly (tests, benchmarks, the scan) register StartMPI in their main, so
+/// that only a run that builds a forest pays for the start.
+void SetMPIStarter(MPIStarter starter);
+
 namespace detail
 {
 std::vector<OctreeLeaf> BuildForest2(int depth, const LeafEvaluator&, const ProgressObserver&, double, double);
 std::vector<OctreeLeaf> BuildForest3(int depth, const LeafEvaluator&, const ProgressObserver&, double, double);
-void EnsureMPIInitialized();
+/// libsc and p4est set up once (their log and abort handlers), with MPI running (SetMPIStarter).
+void InitializeP4est();
 }
 
 } // namespace labelmesher

@@ -354,7 +354,7 @@ std::vector<OctreeLeaf> BuildForest(int depth, const LeafEvaluator& evaluate, co
   if (depth > P4EST_QMAXLEVEL)
     throw std::invalid_argument("image too large for the octree: more than 2^" +
       std::to_string(P4EST_QMAXLEVEL) + " voxels a side");
-  detail::EnsureMPIInitialized();
+  detail::InitializeP4est();
   ForestContext context{ &evaluate, depth, &observer, progressStart, 0, {} };
 #ifdef P4_TO_P8
   std::unique_ptr<p4est_connectivity_t, ForestDeleter> connectivity(p8est_connectivity_new_unitcube());

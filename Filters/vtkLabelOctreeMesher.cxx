@@ -9,6 +9,7 @@
 #include "LabelMesherArrayNames.h"
 #include "LabelOctreeMesher.h"
 #include "MemoryBudget.h"
+#include "Decimation/MeshDecimator.h"
 #include "Mesh/MeshSelection.h"
 #include "Support/MemoryEstimate.h"
 
@@ -26,6 +27,11 @@
 #include <utility>
 
 vtkStandardNewMacro(vtkLabelOctreeMesher);
+
+double vtkLabelOctreeMesher::GetProvenAngleBound(int dimension)
+{
+  return labelmesher::ProvenAngleBound(dimension);
+}
 
 /*
  * Design. RequestData is a sequence of passes, none of which knows the algorithm:

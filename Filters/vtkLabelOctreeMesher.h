@@ -123,6 +123,15 @@ public:
   vtkTypeMacro(vtkLabelOctreeMesher, vtkUnstructuredGridAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The smallest angle of every mesh this filter makes, in degrees: dihedral in 3D (30), planar
+   * in 2D (45), proven by enumerating every cell the fill can emit
+   * (Testing/Cxx/Fill/TestAngleBoundEnumeration.cxx). The largest MinimumAngle the decimator
+   * (and vtkLabelMesher) accepts for an image of that dimension. The one place front ends take
+   * these figures from.
+   */
+  static double GetProvenAngleBound(int dimension);
+
   ///@{
   /**
    * h(I, M): every point of the image boundary lies within this distance of the

@@ -94,7 +94,7 @@ ParameterPanel::ParameterPanel(QWidget* parent)
   this->AngleBox = new QDoubleSpinBox(this);
   this->AngleBox->setObjectName(QStringLiteral("minimumAngle"));
   this->AngleBox->setDecimals(1);
-  this->AngleBox->setRange(1.0, 30.0);
+  this->AngleBox->setRange(1.0, this->maximumAngle());
   this->AngleBox->setSuffix(QStringLiteral(" °"));
   this->AngleBox->setToolTip(tr("Guarantee after decimation: every dihedral angle (3D) or planar angle "
                                 "(2D) is at least this, in degrees; at most 30 in 3D and 45 in 2D. "
@@ -381,6 +381,11 @@ void ParameterPanel::setPreset(Preset preset)
     this->CurrentPreset = preset;
     emit presetChanged(preset);
   }
+}
+
+double ParameterPanel::maximumAngle() const
+{
+  return vtkLabelOctreeMesher::GetProvenAngleBound(this->Dimension);
 }
 
 void ParameterPanel::applyTo(vtkLabelOctreeMesher* mesher, vtkMeshDecimator* decimator, vtkBezierCurver* curver) const

@@ -77,7 +77,7 @@ public:
   double tension() const;      ///< dimensionless, [0, 1]
   Preset preset() const { return this->CurrentPreset; }
   /// The largest angle bound allowed for the image dimension (degrees).
-  double maximumAngle() const { return this->Dimension == 2 ? 45.0 : 30.0; }
+  double maximumAngle() const;
 
   /// Sets the filters' parameters (any pointer may be null). The values are always valid for
   /// them: the setters refuse non-finite and out-of-range values, the angle is clamped to

@@ -6,6 +6,8 @@
 
 #include "MeshFiles.h"
 
+#include "vtkLabelOctreeMesher.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -64,7 +66,9 @@ double ParseAngle(const std::string& text)
 {
   double value = -1.0;
   const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
-  if (!ReadWhole(text, read, value) || !(value > 0.0 && value <= 45.0))
+  // The largest bound of either dimension here; the filters check the image's own.
+  const double largest = std::max(vtkLabelOctreeMesher::GetProvenAngleBound(2), vtkLabelOctreeMesher::GetProvenAngleBound(3));
+  if (!ReadWhole(text, read, value) || !(value > 0.0 && value <= largest))
   {
     throw UsageError("--min-angle expects degrees in (0, 30] (3D) or (0, 45] (2D), got '" + text + "'");
   }

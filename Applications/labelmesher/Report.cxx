@@ -7,6 +7,7 @@
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
+#include "vtkLabelOctreeMesher.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -369,7 +370,7 @@ void WriteJson(const RunReport& r, std::ostream& out)
   j.Key("quality").BeginObject();
   j.Key("angle_kind").String(r.MeshDimension == 3 ? "dihedral" : "planar");
   j.Key("angle_bound_degrees")
-    .Number(r.Decimation ? r.Decimation->AngleBound : (r.MeshDimension == 3 ? 30.0 : 45.0));
+    .Number(r.Decimation ? r.Decimation->AngleBound : vtkLabelOctreeMesher::GetProvenAngleBound(r.MeshDimension));
   j.Key("minimum_angle_degrees");
   optional(r.MinimumAngle);
   j.Key("maximum_angle_degrees");

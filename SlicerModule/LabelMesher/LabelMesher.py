@@ -13,6 +13,8 @@ import numpy as np
 import qt
 import slicer
 import vtk
+
+import labelmesher
 from slicer.ScriptedLoadableModule import (ScriptedLoadableModule, ScriptedLoadableModuleLogic,
                                            ScriptedLoadableModuleTest, ScriptedLoadableModuleWidget)
 from slicer.parameterNodeWrapper import WithinRange, parameterNodeWrapper
@@ -47,7 +49,9 @@ class LabelMesherParameterNode:
     imageToMeshDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
     meshToImageDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
     decimate: bool = True
-    minimumAngle: Annotated[float, WithinRange(1.0, 30.0)] = 15.0
+    # Up to the larger proven bound (45 degrees, one slice); meshing.py checks the image's own (30 in 3D).
+    minimumAngle: Annotated[float, WithinRange(1.0, max(labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(2),
+                                                        labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(3)))] = 15.0
     includeBackground: bool = False
     curve: bool = False
     smoothness: Annotated[int, WithinRange(1, 2)] = 1

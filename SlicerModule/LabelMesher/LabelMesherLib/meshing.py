@@ -63,7 +63,7 @@ class MeshingParameters:
             value = getattr(self, name)
             if not (0.0 <= value <= 64.0):
                 raise MeshingError(f"{name.replace('_', ' ')} must be within 0..64 voxels, not {value}")
-        limit = 30.0 if dimension == 3 else 45.0
+        limit = labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(dimension)
         if self.decimate and not (0.0 < self.minimum_angle <= limit):
             raise MeshingError(
                 f"minimum angle must be within (0, {limit:g}] degrees for a {dimension}D image, not {self.minimum_angle}")
@@ -334,7 +334,7 @@ def quality_report(mesh, dims, placement: Placement, parameters: MeshingParamete
         "decimation": decimation,
         "quality": {"angle_kind": "dihedral" if dimension == 3 else "planar",
                     "angle_bound_degrees": (parameters.minimum_angle if parameters.decimate
-                                            else (30.0 if dimension == 3 else 45.0)),
+                                            else labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(dimension)),
                     "minimum_angle_degrees": _field(mesh, "MinimumAngle"),
                     "maximum_angle_degrees": _field(mesh, "MaximumAngle"),
                     "inverted_cells": _field(mesh, "InvertedCells")},

@@ -41,14 +41,16 @@ std::optional<double> Bound(vtkFieldData* fd, const char* name)
 
 bool CurveReport::CurvesFaithful() const
 {
-  // The measured figures may exceed the true distances by the measure's resolution.
+  // The measured figures may exceed the true distances by the measure's resolution. A bound kept
+  // (the image was given) must be measured to count as kept, and so must the crossings and the
+  // topology: what was not measured is not claimed (as the Slicer module's report does).
   const double resolution = this->CurveResolution.value_or(0.0) + 1e-9;
   auto within = [resolution](const std::optional<double>& measured, const std::optional<double>& bound) {
     return !bound || (measured && *measured <= *bound + resolution);
   };
   return within(this->MeasuredImageToMesh, this->ImageToMeshBound) &&
-    within(this->MeasuredMeshToImage, this->MeshToImageBound) && this->InterfaceCrossings.value_or(0) == 0 &&
-    this->TopologyMatches.value_or(true);
+    within(this->MeasuredMeshToImage, this->MeshToImageBound) && this->InterfaceCrossings &&
+    *this->InterfaceCrossings == 0 && this->TopologyMatches && *this->TopologyMatches;
 }
 
 CurveReport MakeCurveReport(const RunReport& linear, const MeshingSettings& settings, vtkUnstructuredGrid* curved)

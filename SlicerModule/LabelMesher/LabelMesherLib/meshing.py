@@ -47,8 +47,11 @@ class Material:
 @dataclass
 class MeshingParameters:
     """Distances in voxels of the smallest spacing; angle in degrees."""
-    image_to_mesh_distance: float = 2.0  # every labelled voxel centre lies within this of its material
-    mesh_to_image_distance: float = 2.0  # every point of the mesh lies within this of its label's voxels
+    # h(I,M) (MesherParameters.h): every point of the image boundary lies within this of the mesh
+    # boundary, per material; h(M,I): every point of the mesh boundary between two materials lies
+    # within this of the image boundary between them.
+    image_to_mesh_distance: float = 2.0
+    mesh_to_image_distance: float = 2.0
     decimate: bool = True
     minimum_angle: float = 15.0  # the decimator keeps every angle at least this (<= 30 in 3D, 45 in 2D)
     include_background: bool = False

@@ -3,15 +3,13 @@
 // labels split at x = 1.5 and a mesh whose interface lies exactly there: a merge that slides the
 // interface vertex along the interface keeps both distances at 0 and is accepted at any bound;
 // one that tilts the interface to run from the box corner (-0.5, -0.5) (2 voxels from the image
-// interface at its far end) is refused at h = 0.5 and accepted at h = 3; an initial mesh whose
-// interface is a voxel off is refused by the anchors' initial certification at h = 0.5 and
-// certified at h = 1.
+// interface at its far end) is refused at h = 0.5 by either distance alone and accepted at h = 3.
 #include "Decimation/EdgeCollapse.h"
 #include "Decimation/EditableMesh.h"
 #include "Decimation/FidelityCheck.h"
 #include "Decimation/ImageBoundary.h"
 #include "Decimation/ImageBoundaryAnchors.h"
-#include "HandMadeMeshes.h"
+#include "TwoColumnImage.h"
 #include "Support/LabelImage.h"
 
 #include <gtest/gtest.h>
@@ -28,30 +26,8 @@ using labelmesher::FidelityCheck;
 using labelmesher::ImageBoundary;
 using labelmesher::ImageBoundaryAnchors;
 using labelmesher::LabelImage;
-using labelmesher::testing::Triangles2D;
-
-/// 4 x 2 pixels: label 1 for x < 2, label 2 for x >= 2; the image interface is x = 1.5.
-LabelImage TwoColumns()
-{
-  LabelImage image(4, 2, 1);
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 4; ++i)
-      image(i, j, 0) = i < 2 ? 1 : 2;
-  return image;
-}
-
-/// The image's box [-0.5, 3.5] x [-0.5, 1.5] in six triangles around 6 = (interfaceX, 0.5):
-///   3 ---- 4 ---- 5
-///   |  \   |   /  |
-///   |    - 6 -    |
-///   |  /   |   \  |
-///   0 ---- 1 ---- 2     (1 and 4 at x = interfaceX; label 1 left, 2 right)
-EditableMesh Mesh(double interfaceX)
-{
-  return EditableMesh(Triangles2D({ { -0.5, -0.5 }, { interfaceX, -0.5 }, { 3.5, -0.5 }, { -0.5, 1.5 }, { interfaceX, 1.5 },
-                                    { 3.5, 1.5 }, { interfaceX, 0.5 } },
-    { { 0, 1, 6 }, { 0, 6, 3 }, { 3, 6, 4 }, { 1, 2, 6 }, { 2, 5, 6 }, { 6, 5, 4 } }, { 1, 1, 1, 2, 2, 2 }));
-}
+using labelmesher::testing::Mesh;
+using labelmesher::testing::TwoColumns;
 
 /// The anchors certified on `mesh` at h(I,M) = h1, then whether the merge keeps h(M,I) <= h2 and h(I,M) <= h1.
 bool Accepts(const LabelImage& image, const EditableMesh& mesh, double h1, double h2, int from, int to)
@@ -96,21 +72,6 @@ TEST(FidelityCheck, TheBoundDecidesAMergeThatTiltsTheInterface)
   EXPECT_FALSE(Accepts(image, Mesh(1.5), 3.0, 0.5, 6, 0)) << "h(M,I) alone must refuse it";
   EXPECT_FALSE(Accepts(image, Mesh(1.5), 0.5, 3.0, 6, 0)) << "h(I,M) alone must refuse it";
   EXPECT_TRUE(Accepts(image, Mesh(1.5), 3.0, 3.0, 6, 0));
-}
-
-TEST(ImageBoundaryAnchors, AnInitialMeshBeyondTheBoundIsRefused)
-{
-  // The mesh's interface at x = 0.5, a voxel left of the image's.
-  const LabelImage image = TwoColumns();
-  const EditableMesh off = Mesh(0.5);
-  const ImageBoundary boundary(image);
-  std::vector<std::uint8_t> frozen(off.Position.size(), 0);
-  ImageBoundaryAnchors tight(boundary, 0.5);
-  EXPECT_THROW(tight.Initialize(off, off.InterfaceFaces(), frozen), std::invalid_argument);
-  ImageBoundaryAnchors loose(boundary, 1.0);
-  EXPECT_NO_THROW(loose.Initialize(off, off.InterfaceFaces(), frozen));
-  EXPECT_EQ(loose.NumberOfSides(), tight.NumberOfSides());
-  EXPECT_GT(loose.NumberOfSides(), 0u);
 }
 
 } // namespace

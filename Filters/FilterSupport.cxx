@@ -174,12 +174,14 @@ void AddScalarField(vtkFieldData* fd, const char* name, double value)
 
 void PassMaterialTable(vtkFieldData* from, vtkFieldData* to)
 {
-  if (!from || !to)
+  // The three arrays are one table: taken together from one source, or not at all.
+  if (!from || !to || !from->GetAbstractArray(arrays::MaterialLabel))
   {
     return;
   }
   for (const char* name : { arrays::MaterialLabel, arrays::MaterialName, arrays::MaterialColor })
   {
+    to->RemoveArray(name);
     if (vtkAbstractArray* array = from->GetAbstractArray(name))
     {
       to->AddArray(array);

@@ -76,8 +76,9 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(
 void AddScalarField(vtkFieldData* fd, const char* name, double value);
 
 /// Copies the materials' names and colours (MaterialLabel, MaterialName, MaterialColor) from
-/// `from` to `to` when `from` has them, so that a writer at the end of a pipeline still names the
-/// materials a segmentation file named (vtkLabelImageReader puts them on the image).
+/// `from` to `to` when `from` has a table (MaterialLabel), replacing any `to` had: the three
+/// arrays go together, never mixed from two sources. So a writer at the end of a pipeline still
+/// names the materials a segmentation file named (vtkLabelImageReader puts them on the image).
 void PassMaterialTable(vtkFieldData* from, vtkFieldData* to);
 /// `set` when >= 0, else the first value of `input`'s field array `name`, else -1.
 double ResolveBound(double set, vtkDataObject* input, const char* name);

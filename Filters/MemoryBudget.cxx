@@ -72,7 +72,7 @@ std::uint64_t PeakResidentBytes()
   return ProcField("/proc/self/status", "VmHWM");
 }
 
-MemoryBudget AvailableMemory(double limitMiB)
+MemoryBudget AvailableMemory(double limitMiB, bool startsMPI)
 {
   MemoryBudget budget;
   const std::uint64_t resident = ResidentBytes();
@@ -99,11 +99,12 @@ MemoryBudget AvailableMemory(double limitMiB)
   {
     // Address space, not resident memory: threads' stacks and malloc arenas
     // count too, so a run that passes may still stop, with one line, out of memory.
-    // MPI's start, when it is still to come, takes its share first (MPIStartup.h).
-    const std::uint64_t size = ProcField("/proc/self/status", "VmSize") + MPIStartAddressSpace();
+    // MPI's start, when this run brings it, takes its share first (MPIStartup.h).
+    const std::uint64_t mpi = startsMPI ? MPIStartAddressSpace() : 0;
+    const std::uint64_t size = ProcField("/proc/self/status", "VmSize") + mpi;
     const std::uint64_t limit = address.rlim_cur;
     Lower(budget, limit > size ? limit - size : 0,
-      MPIRunning() ? "ulimit -v" : "ulimit -v, less " + FormatMiB(MPIStartAddressSpace()) + " to start MPI");
+      mpi == 0 ? "ulimit -v" : "ulimit -v, less " + FormatMiB(mpi) + " to start MPI");
   }
 #endif
   return budget;

@@ -31,8 +31,10 @@ LABELMESHERFILTERS_EXPORT std::uint64_t PeakResidentBytes();
 /// What a run may still allocate. `limitMiB` > 0: the whole process may hold
 /// at most that many MiB, in place of the machine's available memory (so a
 /// user may also raise it, e.g. counting on swap); 0: the available memory.
-/// The cgroup's memory.max and ulimit -v bound both.
-LABELMESHERFILTERS_EXPORT MemoryBudget AvailableMemory(double limitMiB);
+/// The cgroup's memory.max and ulimit -v bound both. `startsMPI`: the run will start MPI if it
+/// is not running yet (the mesher's), which under ulimit -v first takes its own address space
+/// (MPIStartup.h MPIStartAddressSpace).
+LABELMESHERFILTERS_EXPORT MemoryBudget AvailableMemory(double limitMiB, bool startsMPI = false);
 
 /// Empty when `neededBytes` more fit `budget`; otherwise one sentence naming
 /// both figures, e.g. "this run needs about 1,370 MiB more (estimated from

@@ -96,6 +96,9 @@
  * marked (`Valid` = 0) for inspection: an invalid mesh is never passed on
  * silently. Progress is reported by stage; AbortExecute stops the run (empty output).
  *
+ * A material table in the input mesh's field data (MaterialLabel, MaterialName,
+ * MaterialColor) passes to the output.
+ *
  * @sa vtkLabelOctreeMesher vtkBezierTriangle
  */
 

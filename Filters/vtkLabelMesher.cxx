@@ -105,7 +105,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
 
   const auto blockCells = static_cast<std::uint64_t>(std::max<vtkIdType>(0, this->BlockCells));
   const labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
-  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit);
+  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
   const std::string refusal =
     labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);
   if (!refusal.empty())

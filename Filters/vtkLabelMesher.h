@@ -34,6 +34,10 @@
  * entered the last pass); StageName / StageSeconds. Output port 1,
  * vtkPolyData: the decimated interfaces with `Materials`.
  *
+ * A material table in the input's field data (MaterialLabel, MaterialName,
+ * MaterialColor: vtkLabelImageReader's from a 3D Slicer segmentation) passes to
+ * both outputs, so that a writer downstream names the materials.
+ *
  * Progress is reported through UpdateProgress; AbortExecute stops the run
  * (the output is then empty).
  *

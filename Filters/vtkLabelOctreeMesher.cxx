@@ -112,7 +112,7 @@ int vtkLabelOctreeMesher::RequestData(
   }
 
   const labelmesher::MemoryEstimate estimate = labelmesher::EstimateMemory(image, this->CheckMemoryForDecimation);
-  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit);
+  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
   const std::string refusal =
     labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);
   if (!refusal.empty())

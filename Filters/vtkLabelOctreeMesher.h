@@ -82,6 +82,10 @@
  * triangles in 3D, lines in 2D, with the 2-component int cell array `Materials`
  * holding the labels on either side.
  *
+ * A material table in the input's field data (MaterialLabel, MaterialName,
+ * MaterialColor: vtkLabelImageReader's from a 3D Slicer segmentation) passes to
+ * both outputs, so that a writer downstream names the materials.
+ *
  * Progress is reported through UpdateProgress (with the stage as ProgressText) and
  * AbortExecute stops the run (the output is then empty).
  *

@@ -232,8 +232,9 @@ int vtkMeshDecimator::RequestData(
   labelmesher::AddDecimationFields(fd, parameters, result.Counts, before, kept.NumberOfCells());
   labelmesher::AddScalarField(fd, arrays::IncludeBackground, this->IncludeBackground ? 1.0 : 0.0);
   labelmesher::AddScalarField(fd, arrays::VoxelSize, placement.VoxelSize);
-  labelmesher::PassMaterialTable(imageData ? imageData->GetFieldData() : nullptr, fd);
-  labelmesher::PassMaterialTable(input->GetFieldData(), fd); // the mesh's, where both have a table
+  // The mesh's table where it has one (it came through the mesher), else the image's.
+  labelmesher::PassMaterialTable(
+    input->GetFieldData()->GetAbstractArray(arrays::MaterialLabel) ? input->GetFieldData() : imageData->GetFieldData(), fd);
   labelmesher::PassMaterialTable(fd, boundary->GetFieldData());
   if (this->MeasureOutput)
   {

@@ -55,6 +55,9 @@
  * Progress is reported through UpdateProgress; AbortExecute stops the run
  * (the output is then empty).
  *
+ * A material table (MaterialLabel, MaterialName, MaterialColor) passes to both
+ * outputs: the input mesh's when it has one, else the label image's.
+ *
  * @warning Errors (one message, empty output) when port 1 is missing or is not
  * the image of the mesh, when the mesh has no Material array or does not fill
  * its box (the mesher's IncludeBackground was off), when MinimumAngle is not

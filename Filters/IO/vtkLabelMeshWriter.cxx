@@ -6,7 +6,10 @@
 #include "MeshFiles.h"
 #include "SafeFile.h"
 
+#include "LabelMesherArrayNames.h"
+
 #include "vtkAlgorithmOutput.h"
+#include "vtkCellData.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -72,6 +75,16 @@ void vtkLabelMeshWriter::WriteData()
     if (!mesh)
     {
       throw labelmesher::io::WriteError(std::string("cannot write '") + this->FileName + "': no mesh on input port 0");
+    }
+    // An upstream filter that failed leaves an empty output: no file is better than an empty one.
+    if (mesh->GetNumberOfCells() == 0)
+    {
+      throw labelmesher::io::WriteError(std::string("cannot write '") + this->FileName + "': the mesh has no cells");
+    }
+    if (!mesh->GetCellData()->GetArray(labelmesher::arrays::Material))
+    {
+      throw labelmesher::io::WriteError(
+        std::string("cannot write '") + this->FileName + "': the mesh has no cell array Material");
     }
     labelmesher::io::WriteOptions options;
     options.GmshVersion22 = this->GmshVersion22;

@@ -31,7 +31,10 @@
  * Every file is written to a temporary beside the target, each write checked,
  * and renamed over the target at the end: a failed write (full disk, missing
  * folder, a folder in the way) leaves no partial file, reports one line
- * (ErrorEvent and GetErrorText()) and makes Write() return 0.
+ * (ErrorEvent and GetErrorText()) and makes Write() return 0. So does a mesh
+ * with no cells (what a filter that failed upstream leaves) or without the
+ * `Material` array. (With StlPerInterface each interface's file is written
+ * whole, but a failure at one leaves those written before it.)
  *
  * @sa
  * vtkLabelImageReader vtkLabelMesher

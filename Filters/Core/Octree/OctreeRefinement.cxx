@@ -6,6 +6,7 @@
 #include <sc.h> // includes mpi.h when libsc was built with MPI (SC_ENABLE_MPI)
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <mutex>
@@ -45,42 +46,50 @@ void ThrowOnLibscAbort()
 }
 } // namespace
 
-MPIStarter& RegisteredStarter()
+namespace
 {
-  static MPIStarter starter = nullptr;
-  return starter;
-}
+std::atomic<MPIStarter> registeredStarter{ nullptr };
+std::mutex initializationMutex;
+bool initialized = false; ///< guarded by initializationMutex
+} // namespace
 
 void InitializeP4est()
 {
-  static std::once_flag once;
-  std::call_once(once, [] {
+  // A mutex and a flag rather than std::call_once: a refusal below must leave the set-up to be
+  // tried again (after the application registers a starter), and call_once's retry after an
+  // exception is not reliable everywhere.
+  std::lock_guard<std::mutex> lock(initializationMutex);
+  if (initialized)
+    return;
 #ifdef SC_ENABLE_MPI
-    // MPI start-up is the application's: under mpirun or pvbatch MPI is up already; a plain
-    // process has it started by the starter its front end registered (SetMPIStarter).
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    if (!initialized && RegisteredStarter())
+  // MPI start-up is the application's: under mpirun or pvbatch MPI is up already; a plain
+  // process has it started by the starter its front end registered (SetMPIStarter).
+  int running = 0;
+  MPI_Initialized(&running);
+  if (!running)
+  {
+    if (const MPIStarter starter = registeredStarter.load())
     {
-      RegisteredStarter()();
-      MPI_Initialized(&initialized);
+      starter();
+      MPI_Initialized(&running);
     }
-    if (!initialized)
-      throw std::logic_error("MPI is not running: start it before meshing (labelmesher::StartMPI, "
-                             "Filters/MPIStartup.h), or register a starter with SetMPIStarter");
+  }
+  if (!running)
+    throw std::logic_error("MPI is not running: start it before meshing (labelmesher::StartMPI, "
+                           "Filters/MPIStartup.h), or register a starter with SetMPIStarter");
 #endif
-    // A libsc built without MPI (the Slicer extension's) has MPI stubs and nothing to start.
-    sc_init(sc_MPI_COMM_SELF, 0, 0, KeepLibscMessage, SC_LP_ERROR);
-    p4est_init(KeepLibscMessage, SC_LP_ERROR);
-    sc_set_abort_handler(ThrowOnLibscAbort);
-  });
+  // A libsc built without MPI (the Slicer extension's) has MPI stubs and nothing to start.
+  sc_init(sc_MPI_COMM_SELF, 0, 0, KeepLibscMessage, SC_LP_ERROR);
+  p4est_init(KeepLibscMessage, SC_LP_ERROR);
+  sc_set_abort_handler(ThrowOnLibscAbort);
+  initialized = true;
 }
 
 } // namespace detail
 
 void SetMPIStarter(MPIStarter starter)
 {
-  detail::RegisteredStarter() = starter;
+  detail::registeredStarter.store(starter);
 }
 
 int OctreeDepth(const LabelImage& image)

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """pvbatch: the plugin's reader and writers as a ParaView user meets them. Opens the shared gzip
-NRRD with Label Image (LabelMesher) and compares it voxel for voxel with numpy's decoding (the
+NRRD with Label Image Reader and compares it voxel for voxel with numpy's decoding (the
 format ParaView's own NRRD reader misreads); opens a 3D Slicer segmentation and finds its names in
 the field data; meshes it with Label Mesher and saves .msh, .inp and .mesh through File > Save
 Data's writers (SaveData); reads each back with meshio (cells, materials and their names) and the

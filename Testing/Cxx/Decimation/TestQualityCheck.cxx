@@ -7,6 +7,7 @@
 #include "Decimation/EdgeCollapse.h"
 #include "Decimation/EditableMesh.h"
 #include "Decimation/QualityCheck.h"
+#include "HandMadeMeshes.h"
 
 #include <gtest/gtest.h>
 
@@ -23,20 +24,10 @@ using labelmesher::SimplexMesh;
 
 constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
-/// A 2D mesh of triangles (index-space points, one label per cell).
-SimplexMesh Triangles(const std::vector<std::array<double, 2>>& points, const std::vector<std::array<std::int64_t, 3>>& cells,
-  std::int32_t label = 1)
+/// Triangles of label 1 (HandMadeMeshes.h).
+SimplexMesh Triangles(const std::vector<std::array<double, 2>>& points, const std::vector<std::array<std::int64_t, 3>>& cells)
 {
-  SimplexMesh mesh;
-  mesh.Dimension = 2;
-  for (const auto& p : points)
-    mesh.Points.push_back({ p[0], p[1], 0.0 });
-  for (const auto& c : cells)
-  {
-    mesh.Connectivity.insert(mesh.Connectivity.end(), c.begin(), c.end());
-    mesh.Materials.push_back(label);
-  }
-  return mesh;
+  return labelmesher::testing::Triangles2D(points, cells, std::vector<std::int32_t>(cells.size(), 1));
 }
 
 /// Prepare, OrientationsHold, then (when the orientations hold) Plan and AnglesHold.

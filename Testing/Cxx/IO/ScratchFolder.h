@@ -4,14 +4,16 @@
 
 /**
  * @file ScratchFolder.h
- * A GoogleTest fixture with a fresh, empty folder of its own (named after the test, under the
- * system's temporary folder), removed after the test: the I/O tests write real files there.
+ * A GoogleTest fixture with a fresh, empty folder of its own (named after the test and the
+ * process, under the system's temporary folder, so that two builds' tests never share one),
+ * removed after the test: the I/O tests write real files there.
  */
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
+#include <unistd.h>
 
 namespace labelmesher
 {
@@ -25,7 +27,7 @@ protected:
   {
     this->Folder = std::filesystem::temp_directory_path() /
       ("labelmesher_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name()) +
-        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + std::to_string(getpid()));
     std::filesystem::remove_all(this->Folder);
     std::filesystem::create_directories(this->Folder);
   }

@@ -187,6 +187,23 @@ TEST_F(ReaderTest, ColourTableNamesTheLabels)
   EXPECT_EQ(image->GetNumberOfPoints(), 0);
 }
 
+TEST_F(ReaderTest, ReadsOncePerSettingAndAgainAfterModified)
+{
+  const std::vector<unsigned char> labels = Pattern();
+  const std::string path = this->Path("pattern.nrrd");
+  vtkNew<vtkLabelImageReader> reader;
+  MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+  Read(reader, path); // missing: one error
+  reader->Update();   // nothing changed: neither read nor said again
+  EXPECT_EQ(errors.Messages.size(), 1u);
+  WriteFile(path, NrrdHeader("uchar", "raw") + std::string(labels.begin(), labels.end()));
+  reader->Modified(); // what ParaView's Reload does: read again
+  reader->Update();
+  EXPECT_EQ(errors.Messages.size(), 1u) << errors.Messages.back();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), static_cast<vtkIdType>(labels.size()));
+  EXPECT_STREQ(reader->GetErrorText(), "");
+}
+
 TEST(vtkLabelImageReader, CanReadFileByExtension)
 {
   for (const char* name : { "a.nrrd", "a.NHDR", "a.seg.nrrd", "a.nii", "a.nii.gz", "a.mha", "a.mhd", "a.vti", "a.png" })

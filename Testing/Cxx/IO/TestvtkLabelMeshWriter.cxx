@@ -8,7 +8,10 @@
 #include "FilterTestSupport.h"
 #include "MaterialTable.h"
 #include "ScratchFolder.h"
+#include "vtkBezierCurver.h"
 #include "vtkLabelMesher.h"
+#include "vtkLabelOctreeMesher.h"
+#include "vtkMeshDecimator.h"
 
 #include "vtkFieldData.h"
 #include "vtkPolyData.h"
@@ -129,6 +132,68 @@ TEST_F(WriterTest, NamesReachEveryFiniteElementFormat)
   const labelmesher::io::MaterialTable table = labelmesher::io::ReadMaterialTable(reader->GetOutput()->GetFieldData());
   EXPECT_EQ(table.NameOf(1), "outer shell");
   EXPECT_DOUBLE_EQ(table.Find(1)->Color[0], 0.8);
+}
+
+TEST_F(WriterTest, EveryFilterPassesTheMaterialTable)
+{
+  // The image's table through the mesher and the decimator (3D), and through the curver (2D);
+  // the decimator takes the mesh's table over the image's.
+  vtkSmartPointer<vtkImageData> image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(12, 4.0));
+  labelmesher::io::MaterialTable table;
+  labelmesher::io::MaterialInfo ball;
+  ball.Label = 1;
+  ball.Name = "ball";
+  table.Set(ball);
+  labelmesher::io::StoreMaterialTable(image->GetFieldData(), table);
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->IncludeBackgroundOn();
+  vtkSmartPointer<vtkImageData> other = vtkSmartPointer<vtkImageData>::New();
+  other->DeepCopy(image);
+  ball.Name = "not this one";
+  labelmesher::io::MaterialTable otherTable;
+  otherTable.Set(ball);
+  labelmesher::io::StoreMaterialTable(other->GetFieldData(), otherTable);
+  vtkNew<vtkMeshDecimator> decimator;
+  decimator->SetInputConnection(0, mesher->GetOutputPort(0));
+  decimator->SetInputDataObject(1, other);
+  decimator->Update();
+  for (vtkDataObject* out : { mesher->GetOutputDataObject(0), mesher->GetOutputDataObject(1),
+         decimator->GetOutputDataObject(0), decimator->GetOutputDataObject(1) })
+  {
+    EXPECT_EQ(labelmesher::io::ReadMaterialTable(out->GetFieldData()).NameOf(1), "ball");
+  }
+  vtkSmartPointer<vtkImageData> slice = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeDiscSliceXZ(12, 4.0));
+  labelmesher::io::StoreMaterialTable(slice->GetFieldData(), table);
+  vtkNew<vtkLabelOctreeMesher> mesher2D;
+  mesher2D->SetInputData(slice);
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(mesher2D->GetOutputPort(0));
+  curver->Update();
+  EXPECT_EQ(labelmesher::io::ReadMaterialTable(curver->GetOutput()->GetFieldData()).NameOf(1), "ball");
+  // Nothing to pass: no table appears.
+  vtkNew<vtkLabelOctreeMesher> plain;
+  plain->SetInputData(labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(8, 2.5)));
+  plain->Update();
+  EXPECT_EQ(plain->GetOutput()->GetFieldData()->GetAbstractArray("MaterialLabel"), nullptr);
+}
+
+TEST_F(WriterTest, AnEmptyMeshFromAFailedFilterWritesNoFile)
+{
+  vtkNew<vtkLabelMesher> failed;
+  failed->SetInputData(labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(8, 2.5)));
+  failed->SetMinimumAngle(40.0); // above the 3D bound: an error and an empty output
+  vtkNew<vtkLabelMeshWriter> writer;
+  writer->SetInputConnection(failed->GetOutputPort(0));
+  MessageRecorder errors(writer, vtkCommand::ErrorEvent);
+  for (const char* name : { "m.vtu", "m.msh" })
+  {
+    writer->SetFileName(this->Path(name).c_str());
+    EXPECT_EQ(writer->Write(), 0) << name;
+    EXPECT_NE(std::string(writer->GetErrorText()).find("no cells"), std::string::npos) << writer->GetErrorText();
+    EXPECT_FALSE(std::filesystem::exists(this->Path(name))) << name;
+  }
+  EXPECT_EQ(errors.Messages.size(), 2u);
 }
 
 TEST_F(WriterTest, GmshVersionChoice)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The core starts no MPI (issue 34): without MPI running and without a starter registered by the
 // application, building the forest is refused with one clear error, not started behind the
-// application's back; with the starter (as every front end and TestMain.cxx register it) the same
+// application's back; with the starter (as every front end and GTestMain.cxx register it) the same
 // image meshes. Runs in its own process under ctest (MPI not yet up); skipped otherwise.
 #include "LabelOctreeMesher.h"
 #include "MPIStartup.h"

@@ -93,7 +93,7 @@ TEST(MemoryEstimate, LibscAllocationFailureThrowsInsteadOfAborting)
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "AddressSanitizer reports the impossible allocation itself";
 #else
-  detail::InitializeP4est(); // MPI through the starter TestMain.cxx registers
+  detail::InitializeP4est(); // MPI through the starter GTestMain.cxx registers
   // Without the abort handler this ends the process (MPI_Abort's banner).
   EXPECT_THROW(sc_malloc(p4est_package_id, std::size_t(1) << 62), std::bad_alloc);
   // The process goes on: p4est still works.

@@ -28,6 +28,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -205,6 +206,13 @@ int main(int argc, char* argv[])
   try
   {
     return Run(args);
+  }
+  catch (const std::bad_alloc&)
+  {
+    // An allocation outside the filters' guarded runs (reading, packing, writing): say what it is.
+    std::cerr << "labelmesher: error: out of memory while reading the image or handling the mesh (the "
+                 "meshing checks its own need beforehand): free memory, or raise --max-memory or ulimit -v\n";
+    return 1;
   }
   catch (const std::exception& e)
   {

@@ -3,6 +3,7 @@
 #include "FilterSupport.h"
 
 #include "Checks/MeshChecks.h"
+#include "Decimation/MeshDecimator.h"
 #include "LabelMesherArrayNames.h"
 
 #include "vtkAlgorithm.h"
@@ -165,6 +166,11 @@ double ResolveBound(double set, vtkDataObject* input, const char* name)
     return set;
   vtkDataArray* recorded = input ? input->GetFieldData()->GetArray(name) : nullptr;
   return recorded && recorded->GetNumberOfTuples() > 0 ? recorded->GetComponent(0, 0) : -1.0;
+}
+
+double ClampToProvenAngleBounds(double degrees)
+{
+  return std::clamp(degrees, 0.0, std::max(ProvenAngleBound(2), ProvenAngleBound(3)));
 }
 
 void AddScalarField(vtkFieldData* fd, const char* name, double value)

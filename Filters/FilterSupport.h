@@ -75,6 +75,10 @@ vtkSmartPointer<vtkCellArray> MakeCellArray(
 /// One-tuple double array `name` = value.
 void AddScalarField(vtkFieldData* fd, const char* name, double value);
 
+/// `degrees` clamped to [0, the larger of the proven angle bounds of 2D and 3D meshes]: what the
+/// filters' SetMinimumAngle keep (the image's own bound is checked when they run).
+double ClampToProvenAngleBounds(double degrees);
+
 /// Copies the materials' names and colours (MaterialLabel, MaterialName, MaterialColor) from
 /// `from` to `to` when `from` has a table (MaterialLabel), replacing any `to` had: the three
 /// arrays go together, never mixed from two sources. So a writer at the end of a pipeline still

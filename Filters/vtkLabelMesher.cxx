@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// vtkLabelMesher's passes: read the image, run the block-streamed core pipeline, pack and measure.
+// vtkLabelMesher's stages: mesh and decimate (the block-streamed core pipeline) or mesh alone
+// (vtkLabelOctreeMesher), then curve (vtkBezierCurver); one progress and one abort over them all.
 #include "vtkLabelMesher.h"
 
+#include "FilterStage.h"
 #include "FilterSupport.h"
 #include "MPIStartup.h"
 #include "LabelImageConversion.h"
@@ -10,6 +12,8 @@
 #include "Mesh/MeshSelection.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/MemoryEstimate.h"
+#include "vtkBezierCurver.h"
+#include "vtkLabelOctreeMesher.h"
 
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
@@ -20,6 +24,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <exception>
 #include <new>
 #include <string>
@@ -28,20 +33,71 @@
 vtkStandardNewMacro(vtkLabelMesher);
 
 /*
- * Design. RequestData is a sequence of passes, none of which knows the algorithm:
- *   1. convert: the label image as the core's LabelImage (LabelImageConversion.h);
- *   2. check:   the streamed run's memory estimate against the budget;
- *   3. run:     labelmesher::MeshAndDecimate, progress and abort forwarded;
- *   4. pack and measure, as the mesher and the decimator (FilterSupport.h).
+ * Design. RequestData runs the stages, none of which knows the algorithm:
+ *   - mesh and decimate (MeshAndDecimate): the label image as the core's LabelImage
+ *     (LabelImageConversion.h), the streamed run's memory estimate against the budget,
+ *     labelmesher::MeshAndDecimate with progress and abort forwarded, then pack and measure as the
+ *     mesher and the decimator do (FilterSupport.h);
+ *   - or mesh alone (MeshOnly): vtkLabelOctreeMesher run as a stage (FilterStage.h);
+ *   - curve (CurveMesh): vtkBezierCurver run as a stage on the linear mesh and the image.
  */
 
 namespace arrays = labelmesher::arrays;
+
+namespace
+{
+/// The stages' rough weights in a run's time on real images (meshing alone is a small part of
+/// meshing and decimating); each stage's progress fills its share of the whole run's.
+constexpr double kMeshWeight = 0.3, kMeshAndDecimateWeight = 1.0, kCurveWeight = 0.3;
+
+bool IsTwoDimensional(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+double vtkLabelMesher::GetProvenAngleBound(int dimension)
+{
+  return vtkLabelOctreeMesher::GetProvenAngleBound(dimension);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLabelMesher::GetMaterialArrayName()
+{
+  return arrays::Material;
+}
+const char* vtkLabelMesher::GetMaterialLabelArrayName()
+{
+  return arrays::MaterialLabel;
+}
+const char* vtkLabelMesher::GetMaterialNameArrayName()
+{
+  return arrays::MaterialName;
+}
+const char* vtkLabelMesher::GetMaterialColorArrayName()
+{
+  return arrays::MaterialColor;
+}
+
+//------------------------------------------------------------------------------
+void vtkLabelMesher::SetMinimumAngle(double degrees)
+{
+  const double clamped = labelmesher::ClampToProvenAngleBounds(degrees);
+  if (clamped != this->MinimumAngle)
+  {
+    this->MinimumAngle = clamped;
+    this->Modified();
+  }
+}
 
 //------------------------------------------------------------------------------
 vtkLabelMesher::vtkLabelMesher()
 {
   this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
@@ -50,6 +106,12 @@ vtkLabelMesher::vtkLabelMesher()
 vtkPolyData* vtkLabelMesher::GetInterfacesOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGrid* vtkLabelMesher::GetCurvedOutput()
+{
+  return vtkUnstructuredGrid::SafeDownCast(this->GetOutputDataObject(2));
 }
 
 //------------------------------------------------------------------------------
@@ -87,22 +149,121 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
-  if (!input || !output || !boundary)
+  vtkPolyData* interfaces = vtkPolyData::GetData(outputVector, 1);
+  vtkUnstructuredGrid* curved = vtkUnstructuredGrid::GetData(outputVector, 2);
+  if (!input || !output || !interfaces || !curved)
   {
     vtkErrorMacro("Missing input image or outputs.");
     return 0;
   }
-
-  labelmesher::ImagePlacement placement;
-  labelmesher::LabelImage image;
-  std::string error;
-  if (!labelmesher::ConvertLabelImage(input, this->GetInputArrayToProcess(0, inputVector), image, placement, error))
+  if (this->Curve && !IsTwoDimensional(input))
   {
-    vtkErrorMacro(<< error << ".");
+    vtkErrorMacro("Curving needs a 2D image (one extent of a single slice); this image is 3D.");
     return 1;
   }
 
+  const double meshWeight = this->Decimate ? kMeshAndDecimateWeight : kMeshWeight;
+  const double meshShare = meshWeight / (meshWeight + (this->Curve ? kCurveWeight : 0.0));
+  const bool meshed = this->Decimate
+    ? this->MeshAndDecimate(input, this->GetInputArrayToProcess(0, inputVector), output, interfaces, meshShare)
+    : this->MeshOnly(input, output, interfaces, meshShare);
+  if (meshed && this->Curve && !this->CurveMesh(input, output, curved, meshShare))
+  {
+    // Stopped while curving: the run is not done, and a linear mesh is not what was asked for.
+    output->Initialize();
+    interfaces->Initialize();
+  }
+  this->SetProgressText(nullptr);
+  if (!this->GetAbortExecute())
+  {
+    this->UpdateProgress(1.0); // a stopped run's progress stays where it stopped
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLabelMesher::MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share)
+{
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetImageToMeshDistance(this->ImageToMeshDistance);
+  mesher->SetMeshToImageDistance(this->MeshToImageDistance);
+  mesher->SetIncludeBackground(this->IncludeBackground);
+  mesher->SetMeasureOutput(this->MeasureOutput);
+  mesher->SetMemoryLimit(this->MemoryLimit);
+  mesher->SetInputArrayToProcess(0, this->GetInputArrayInformation(0));
+  // A copy, so that the inner pipeline leaves the input's pipeline information alone.
+  vtkNew<vtkImageData> image;
+  image->ShallowCopy(input);
+  mesher->SetInputData(image);
+  const labelmesher::StageMessages messages = labelmesher::RunAsStage(this, mesher, 0.0, share);
+  if (!messages.Error.empty())
+  {
+    vtkErrorMacro(<< messages.Error);
+    return false;
+  }
+  if (!messages.Warning.empty())
+  {
+    vtkWarningMacro(<< messages.Warning);
+  }
+  if (this->GetAbortExecute() || mesher->GetOutput()->GetNumberOfCells() == 0)
+  {
+    return false;
+  }
+  output->ShallowCopy(mesher->GetOutput());
+  interfaces->ShallowCopy(mesher->GetInterfacesOutput());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start)
+{
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetSmoothness(this->Smoothness);
+  curver->SetTension(this->Tension);
+  curver->SetMaximumUntanglingSteps(this->MaximumUntanglingSteps);
+  curver->SetMaximumShorteningRounds(this->MaximumShorteningRounds);
+  curver->SetQualityIterations(this->QualityIterations);
+  // Copies, so that the inner pipeline leaves this filter's output and input alone.
+  vtkNew<vtkUnstructuredGrid> mesh;
+  mesh->ShallowCopy(linear);
+  vtkNew<vtkImageData> image;
+  image->ShallowCopy(input);
+  curver->SetInputDataObject(0, mesh);
+  curver->SetInputDataObject(1, image);
+  const labelmesher::StageMessages messages = labelmesher::RunAsStage(this, curver, start, 1.0 - start);
+  if (!messages.Warning.empty())
+  {
+    vtkWarningMacro(<< messages.Warning);
+  }
+  if (this->GetAbortExecute() && curver->GetOutput()->GetNumberOfCells() == 0)
+  {
+    return false;
+  }
+  // An untangling failure still outputs the marked mesh: kept, with the error.
+  curved->ShallowCopy(curver->GetOutput());
+  if (!messages.Error.empty())
+  {
+    vtkErrorMacro(<< messages.Error);
+  }
+  else if (curved->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro("The curver produced no cells.");
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLabelMesher::MeshAndDecimate(
+  vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output, vtkPolyData* boundary, double share)
+{
+  labelmesher::ImagePlacement placement;
+  labelmesher::LabelImage image;
+  std::string error;
+  if (!labelmesher::ConvertLabelImage(input, labels, image, placement, error))
+  {
+    vtkErrorMacro(<< error << ".");
+    return false;
+  }
   const auto blockCells = static_cast<std::uint64_t>(std::max<vtkIdType>(0, this->BlockCells));
   const labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
   const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
@@ -111,7 +272,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   if (!refusal.empty())
   {
     vtkErrorMacro(<< refusal << ".");
-    return 1;
+    return false;
   }
 
   labelmesher::MesherParameters mesher;
@@ -125,29 +286,29 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   labelmesher::StreamingParameters streaming;
   streaming.BlockCells = blockCells;
 
-  const double share = this->MeasureOutput ? 0.8 : 1.0;
+  const double runShare = share * (this->MeasureOutput ? 0.8 : 1.0);
   labelmesher::StreamedResult result;
   labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
   try
   {
-    result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, share));
+    result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, runShare));
   }
   catch (const labelmesher::AbortRequested&)
   {
     vtkWarningMacro("Meshing aborted on request: output is empty.");
-    return 1;
+    return false;
   }
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro("Meshing failed: out of memory (estimated beforehand to need "
       << labelmesher::FormatMiB(estimate.RunBytes) << " more; " << labelmesher::FormatMiB(budget.Bytes)
       << " were available: " << budget.Source << ").");
-    return 1;
+    return false;
   }
   catch (const std::exception& e)
   {
     vtkErrorMacro("Meshing failed: " << e.what() << ".");
-    return 1;
+    return false;
   }
 
   labelmesher::DecimationResult& decimated = result.Decimated;
@@ -172,11 +333,11 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   if (this->MeasureOutput)
   {
     this->SetProgressText("measure");
-    this->UpdateProgress(share);
+    this->UpdateProgress(runShare);
     try
     {
       labelmesher::AddMeasurements(fd, image, kept, this->ImageToMeshDistance, this->MeshToImageDistance,
-        decimated.Timings, [&](int checksDone) { this->UpdateProgress(share + (1.0 - share) * checksDone / 4.0); });
+        decimated.Timings, [&](int checksDone) { this->UpdateProgress(runShare + (share - runShare) * checksDone / 4.0); });
     }
     catch (const std::exception& e)
     {
@@ -184,9 +345,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     }
   }
   labelmesher::AddStageTimings(fd, decimated.Timings);
-  this->SetProgressText(nullptr);
-  this->UpdateProgress(1.0);
-  return 1;
+  return output->GetNumberOfCells() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -201,4 +360,11 @@ void vtkLabelMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IncludeBackground: " << (this->IncludeBackground ? "On" : "Off") << "\n";
   os << indent << "MeasureOutput: " << (this->MeasureOutput ? "On" : "Off") << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB (0: the available memory)\n";
+  os << indent << "Decimate: " << (this->Decimate ? "On" : "Off") << "\n";
+  os << indent << "Curve: " << (this->Curve ? "On" : "Off") << "\n";
+  os << indent << "Smoothness: C" << this->Smoothness << "\n";
+  os << indent << "Tension: " << this->Tension << "\n";
+  os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
+  os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
+  os << indent << "QualityIterations: " << this->QualityIterations << "\n";
 }

@@ -1,52 +1,69 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /**
  * @class   vtkLabelMesher
- * @brief   mesh a multi-label image and decimate the mesh in one pass, block by
- *          block, keeping every guarantee of vtkLabelOctreeMesher and
- *          vtkMeshDecimator without ever holding the whole initial mesh
+ * @brief   the whole LabelMesher pipeline in one filter: mesh a multi-label image,
+ *          decimate the mesh block by block, and (2D, on request) curve it
  *
- * vtkLabelMesher gives the mesh of vtkLabelOctreeMesher (IncludeBackground on)
- * followed by vtkMeshDecimator, with the same guarantees (angle bound, both
+ * vtkLabelMesher is what every front end runs (the labelmesher CLI, the
+ * desktop viewer, the 3D Slicer module, ParaView's "Label Mesher (all
+ * stages)"): they set its parameters and show its outputs, nothing more.
+ *
+ * Decimate on (default): the mesh of vtkLabelOctreeMesher (IncludeBackground
+ * on) followed by vtkMeshDecimator, with the same guarantees (angle bound, both
  * Hausdorff distances overall and per material, topology of every material),
- * but runs them as one block-streamed pipeline, the VTK-free core function
+ * run as one block-streamed pipeline, the VTK-free core function
  * labelmesher::MeshAndDecimate (Filters/Core/Streaming/StreamedPipeline.h):
  * the octree's leaves in Morton order are cut into blocks of about BlockCells
  * initial cells; each block is filled, decimated with its border frozen, and
  * released; the assembled mesh is then checked whole and decimated once more
  * around the borders. Peak memory follows one block and the output instead of
- * the initial mesh, which on large images is several times the output.
+ * the initial mesh, which on large images is several times the output. The
+ * mesh depends on BlockCells (the borders lie elsewhere), never on the number
+ * of threads. With BlockCells 0 (one block) it is exactly the mesher followed
+ * by the decimator.
  *
- * The mesh depends on BlockCells (the borders lie elsewhere), never on the
- * number of threads. With BlockCells 0 (one block) it is exactly the mesher
- * followed by the decimator.
+ * Decimate off: vtkLabelOctreeMesher's mesh, exactly (the initial mesh, angles
+ * at least GetProvenAngleBound).
+ *
+ * Curve on (2D images only): vtkBezierCurver then curves that mesh with the
+ * image (its Smoothness, Tension, MaximumUntanglingSteps,
+ * MaximumShorteningRounds, QualityIterations), keeping the bounds the linear
+ * mesh records; the cubic Bezier mesh is output port 2.
  *
  * Input port 0: the label image, as vtkLabelOctreeMesher's (integer point
  * scalars or the array selected with SetInputArrayToProcess(0, 0, 0, POINTS,
  * name); 2D when one extent is a single slice).
  *
- * Output port 0, vtkUnstructuredGrid: the decimated cells of the kept
- * materials, cell array `Material`, as vtkMeshDecimator's. Field data: the
- * decimator's (AngleBound, ImageToMeshDistance, MeshToImageDistance,
+ * Output port 0, vtkUnstructuredGrid: the linear mesh (decimated unless
+ * Decimate is off) of the kept materials, cell array `Material`. Field data:
+ * the decimator's (AngleBound, ImageToMeshDistance, MeshToImageDistance,
  * IncludeBackground, VoxelSize, CellsBefore, CellsAfter, Merges, MergeOffers,
  * MergesRejectedBy*, VerticesRelocated, FrozenVertices, measurements when
  * MeasureOutput is on), the mesher's NumberOfLeaves, EstimatedMemory and
  * InterfaceFaces, and Blocks, LargestBlockCells and AssembledCells (cells that
- * entered the last pass); StageName / StageSeconds. Output port 1,
- * vtkPolyData: the decimated interfaces with `Materials`.
+ * entered the last pass); StageName / StageSeconds. Without decimation, the
+ * mesher's field data. Output port 1, vtkPolyData: the linear mesh's
+ * interfaces with `Materials`. Output port 2, vtkUnstructuredGrid: with Curve,
+ * vtkBezierCurver's output (VTK_BEZIER_TRIANGLE cells and its field data);
+ * empty otherwise. vtkLabelMeshReport turns these into the run's report.
  *
  * A material table in the input's field data (MaterialLabel, MaterialName,
  * MaterialColor: vtkLabelImageReader's from a 3D Slicer segmentation) passes to
- * both outputs, so that a writer downstream names the materials.
+ * every output, so that a writer downstream names the materials.
  *
- * Progress is reported through UpdateProgress; AbortExecute stops the run
- * (the output is then empty).
+ * Progress is reported through UpdateProgress, over the whole run (the stages'
+ * shares are their rough weights on real images); AbortExecute stops the run
+ * in whichever stage it is (the outputs are then empty, and a warning says so).
  *
- * @warning Errors (one message, empty output) for an image that is not a
- * label image (as vtkLabelOctreeMesher), a MinimumAngle outside (0, 30] (3D)
- * or (0, 45] (2D), and a run estimated not to fit in memory.
+ * @warning Errors (one message) for an image that is not a label image (as
+ * vtkLabelOctreeMesher), a MinimumAngle outside (0, GetProvenAngleBound], a
+ * run estimated not to fit in memory, and Curve on a 3D image: the outputs are
+ * then empty. A curving whose untangling fails is an error too, but port 2
+ * then holds the curver's marked mesh (cell data Valid), to inspect; ports 0
+ * and 1 hold the linear mesh.
  *
  * @sa
- * vtkLabelOctreeMesher vtkMeshDecimator vtkBezierCurver
+ * vtkLabelOctreeMesher vtkMeshDecimator vtkBezierCurver vtkLabelMeshReport
  */
 
 #ifndef vtkLabelMesher_h
@@ -55,7 +72,10 @@
 #include "LabelMesherFiltersModule.h" // For export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+class vtkDataArray;
+class vtkImageData;
 class vtkPolyData;
+class vtkUnstructuredGrid;
 
 class LABELMESHERFILTERS_EXPORT vtkLabelMesher : public vtkUnstructuredGridAlgorithm
 {
@@ -83,13 +103,43 @@ public:
   vtkGetMacro(MeshToImageDistance, double);
   ///@}
 
+  /**
+   * The smallest dihedral (3D, dimension 3) or planar (2D) angle, in degrees,
+   * that the initial mesh is proven to keep (by enumerating every cell the
+   * fill can emit): the largest MinimumAngle a decimation may ask for.
+   */
+  static double GetProvenAngleBound(int dimension);
+
   ///@{
   /**
-   * Smallest dihedral (3D) or planar (2D) angle of the output, in degrees.
-   * Range (0, 30] in 3D and (0, 45] in 2D (the initial mesh's proven bounds);
-   * default 15.
+   * The names of the arrays a script needs (LabelMesherArrayNames.h): the
+   * cell array of material labels, and the material table's field arrays
+   * (label, name, colour) that the filters pass from the image to the mesh.
    */
-  vtkSetClampMacro(MinimumAngle, double, 0.0, 45.0);
+  static const char* GetMaterialArrayName();
+  static const char* GetMaterialLabelArrayName();
+  static const char* GetMaterialNameArrayName();
+  static const char* GetMaterialColorArrayName();
+  ///@}
+
+  ///@{
+  /**
+   * Decimate the initial mesh (vtkMeshDecimator's merges, streamed by blocks).
+   * Off: the initial mesh is the output. Default on.
+   */
+  vtkSetMacro(Decimate, bool);
+  vtkGetMacro(Decimate, bool);
+  vtkBooleanMacro(Decimate, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Smallest dihedral (3D) or planar (2D) angle the decimation keeps, in
+   * degrees: (0, GetProvenAngleBound(dimension)]; default 15. Values are
+   * clamped to [0, the larger of the two bounds]; the image's own bound is
+   * checked when the filter runs.
+   */
+  virtual void SetMinimumAngle(double degrees);
   vtkGetMacro(MinimumAngle, double);
   ///@}
 
@@ -143,10 +193,44 @@ public:
   vtkGetMacro(MemoryLimit, double);
   ///@}
 
+  ///@{
   /**
-   * The decimated interfaces (output port 1).
+   * Curve the linear mesh into cubic Bezier triangles (vtkBezierCurver, 2D
+   * images only), output port 2. Default off.
+   */
+  vtkSetMacro(Curve, bool);
+  vtkGetMacro(Curve, bool);
+  vtkBooleanMacro(Curve, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The curver's parameters, as vtkBezierCurver's (same defaults): Smoothness
+   * 1 (C1, fitted to the image) or 2 (C2); Tension, the C1 handle length
+   * factor, dimensionless in [0, 1]; MaximumUntanglingSteps (load steps, >= 1);
+   * MaximumShorteningRounds (>= 1); QualityIterations (>= 0).
+   */
+  vtkSetClampMacro(Smoothness, int, 1, 2);
+  vtkGetMacro(Smoothness, int);
+  vtkSetClampMacro(Tension, double, 0.0, 1.0);
+  vtkGetMacro(Tension, double);
+  vtkSetClampMacro(MaximumUntanglingSteps, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumUntanglingSteps, int);
+  vtkSetClampMacro(MaximumShorteningRounds, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumShorteningRounds, int);
+  vtkSetClampMacro(QualityIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(QualityIterations, int);
+  ///@}
+
+  /**
+   * The linear mesh's interfaces (output port 1).
    */
   vtkPolyData* GetInterfacesOutput();
+
+  /**
+   * The curved mesh (output port 2; empty unless Curve is on).
+   */
+  vtkUnstructuredGrid* GetCurvedOutput();
 
 protected:
   vtkLabelMesher();
@@ -157,6 +241,7 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  bool Decimate = true;
   double ImageToMeshDistance = 2.0;
   double MeshToImageDistance = 2.0;
   double MinimumAngle = 15.0;
@@ -165,8 +250,21 @@ protected:
   bool IncludeBackground = false;
   bool MeasureOutput = true;
   double MemoryLimit = 0.0;
+  bool Curve = false;
+  int Smoothness = 1;
+  double Tension = 1.0 / 3.0;
+  int MaximumUntanglingSteps = 64;
+  int MaximumShorteningRounds = 8;
+  int QualityIterations = 0;
 
 private:
+  // The stages; each returns false when the run ends there (error, abort, no cells).
+  bool MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output,
+    vtkPolyData* interfaces, double share);
+  bool MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share);
+  /// False when stopped on request before the curver made its mesh.
+  bool CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start);
+
   vtkLabelMesher(const vtkLabelMesher&) = delete;
   void operator=(const vtkLabelMesher&) = delete;
 };

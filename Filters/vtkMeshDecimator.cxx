@@ -31,6 +31,17 @@
 
 vtkStandardNewMacro(vtkMeshDecimator);
 
+//------------------------------------------------------------------------------
+void vtkMeshDecimator::SetMinimumAngle(double degrees)
+{
+  const double clamped = labelmesher::ClampToProvenAngleBounds(degrees);
+  if (clamped != this->MinimumAngle)
+  {
+    this->MinimumAngle = clamped;
+    this->Modified();
+  }
+}
+
 /*
  * Design. RequestData is a sequence of passes, none of which knows the algorithm:
  *   1. convert: the label image (port 1) as the core's LabelImage, with its

@@ -87,10 +87,12 @@ public:
   ///@{
   /**
    * Smallest dihedral (3D) or planar (2D) angle a merge may create, in
-   * degrees. Range (0, 30] in 3D and (0, 45] in 2D (the initial mesh's proven
-   * bounds); default 15. Smaller angles allow fewer cells.
+   * degrees: (0, vtkLabelOctreeMesher::GetProvenAngleBound(dimension)], the
+   * initial mesh's proven bound; default 15. Smaller angles allow fewer cells.
+   * Values are clamped to [0, the larger of the 2D and 3D bounds]; the mesh's
+   * own bound is checked when the filter runs.
    */
-  vtkSetClampMacro(MinimumAngle, double, 0.0, 45.0);
+  virtual void SetMinimumAngle(double degrees);
   vtkGetMacro(MinimumAngle, double);
   ///@}
 

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "ParameterPanel.h"
 
-#include "vtkBezierCurver.h"
-#include "vtkLabelOctreeMesher.h"
-#include "vtkMeshDecimator.h"
+#include "vtkLabelMesher.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -97,8 +95,10 @@ ParameterPanel::ParameterPanel(QWidget* parent)
   this->AngleBox->setRange(1.0, this->maximumAngle());
   this->AngleBox->setSuffix(QStringLiteral(" °"));
   this->AngleBox->setToolTip(tr("Guarantee after decimation: every dihedral angle (3D) or planar angle "
-                                "(2D) is at least this, in degrees; at most 30 in 3D and 45 in 2D. "
-                                "Without decimation the proven bounds are 30 (3D) and 45 (2D) degrees."));
+                                "(2D) is at least this, in degrees; at most %1 in 3D and %2 in 2D. "
+                                "Without decimation the proven bounds are %1 (3D) and %2 (2D) degrees.")
+                               .arg(vtkLabelMesher::GetProvenAngleBound(3))
+                               .arg(vtkLabelMesher::GetProvenAngleBound(2)));
   form->addRow(tr("Minimum angle"), this->AngleBox);
 
   this->BlockCellsBox = new QSpinBox(this);
@@ -385,25 +385,24 @@ void ParameterPanel::setPreset(Preset preset)
 
 double ParameterPanel::maximumAngle() const
 {
-  return vtkLabelOctreeMesher::GetProvenAngleBound(this->Dimension);
+  return vtkLabelMesher::GetProvenAngleBound(this->Dimension);
 }
 
-void ParameterPanel::applyTo(vtkLabelOctreeMesher* mesher, vtkMeshDecimator* decimator, vtkBezierCurver* curver) const
+void ParameterPanel::applyTo(vtkLabelMesher* pipeline) const
 {
-  if (mesher)
+  if (!pipeline)
   {
-    mesher->SetImageToMeshDistance(this->ImageToMesh);
-    mesher->SetMeshToImageDistance(this->MeshToImage);
+    return;
   }
-  if (decimator)
-  {
-    decimator->SetMinimumAngle(this->minimumAngle());
-  }
-  if (curver)
-  {
-    curver->SetSmoothness(this->smoothness());
-    curver->SetTension(this->tension());
-  }
+  pipeline->SetImageToMeshDistance(this->ImageToMesh);
+  pipeline->SetMeshToImageDistance(this->MeshToImage);
+  pipeline->SetDecimate(this->decimate());
+  pipeline->SetMinimumAngle(this->minimumAngle());
+  pipeline->SetBlockCells(this->blockCells());
+  pipeline->SetMemoryLimit(this->memoryLimit());
+  pipeline->SetCurve(this->curve());
+  pipeline->SetSmoothness(this->smoothness());
+  pipeline->SetTension(this->tension());
 }
 
 } // namespace widgets

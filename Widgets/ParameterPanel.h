@@ -4,8 +4,8 @@
 
 /**
  * @file ParameterPanel.h
- * A Qt5 panel for the parameters of vtkLabelOctreeMesher, vtkMeshDecimator and
- * vtkBezierCurver: the two distance bounds (shown in voxels of the smallest
+ * A Qt5 panel for the parameters of vtkLabelMesher (mesher, decimator and
+ * curver in one pipeline): the two distance bounds (shown in voxels of the smallest
  * spacing or in mm), the decimator's angle bound, whether to curve (2D images)
  * and the curver's smoothness and tension, and presets. Every value is a Q_PROPERTY with a change signal; the
  * distance properties are always in voxels (the filters' unit), whatever the
@@ -20,9 +20,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
-class vtkBezierCurver;
-class vtkLabelOctreeMesher;
-class vtkMeshDecimator;
+class vtkLabelMesher;
 
 namespace labelmesher
 {
@@ -79,10 +77,10 @@ public:
   /// The largest angle bound allowed for the image dimension (degrees).
   double maximumAngle() const;
 
-  /// Sets the filters' parameters (any pointer may be null). The values are always valid for
-  /// them: the setters refuse non-finite and out-of-range values, the angle is clamped to
+  /// Sets the pipeline's parameters (nothing when `pipeline` is null). The values are always valid
+  /// for it: the setters refuse non-finite and out-of-range values, the angle is clamped to
   /// [1, maximumAngle()] whenever the image geometry changes.
-  void applyTo(vtkLabelOctreeMesher* mesher, vtkMeshDecimator* decimator, vtkBezierCurver* curver) const;
+  void applyTo(vtkLabelMesher* pipeline) const;
 
 public slots:
   void setImageToMeshDistance(double voxels);

@@ -259,8 +259,7 @@ void MainWindow::onProgress(double fraction, const QString& stage)
 void MainWindow::onFinished()
 {
   const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
-  labelmesher_cli::RunReport report =
-    labelmesher_cli::MakeReport(this->ImagePath.toStdString(), this->RunSettings, this->Image, out.Mesh, out.Initial);
+  labelmesher::report::RunReport report = labelmesher::report::MakeReport(this->ImagePath.toStdString(), this->Image, out.Mesh);
   report.Outputs = { "(not saved)" };
   report.Materials = this->Materials;
   for (const QString& note : this->Notes)
@@ -271,11 +270,11 @@ void MainWindow::onFinished()
   this->Curves.reset();
   if (out.Curved)
   {
-    this->Curves = labelmesher_cli::MakeCurveReport(report, this->RunSettings, out.Curved);
+    this->Curves = labelmesher::report::MakeCurveReport(report, out.Curved);
   }
 
   std::map<int, QColor> colours;
-  for (const labelmesher::io::MaterialInfo& m : this->Materials.Entries())
+  for (const labelmesher::MaterialInfo& m : this->Materials.Entries())
   {
     if (m.HasColor())
     {
@@ -335,11 +334,11 @@ void MainWindow::showReport()
   // The CLI's own summary.
   if (this->Curves)
   {
-    labelmesher_cli::PrintCurveSummary(*this->Curves, text);
+    labelmesher::report::PrintCurveSummary(*this->Curves, text);
   }
   else
   {
-    labelmesher_cli::PrintSummary(*this->Report, text);
+    labelmesher::report::PrintSummary(*this->Report, text);
   }
   this->Summary->setPlainText(QString::fromStdString(text.str()));
 }

@@ -16,9 +16,9 @@
  * menus and buttons call, so a test drives the window exactly as a user does.
  */
 
-#include "CurveReport.h"
+#include "Report/CurveReport.h"
 #include "MeshingJob.h"
-#include "Report.h"
+#include "Report/RunReport.h"
 
 #include "MaterialTable.h"
 
@@ -76,9 +76,9 @@ public:
   widgets::MeshView* view() const { return this->View; }
   widgets::AngleHistogram* histogram() const { return this->Histogram; }
   /// The last finished run's report (the CLI's figures), if any.
-  const std::optional<labelmesher_cli::RunReport>& report() const { return this->Report; }
+  const std::optional<labelmesher::report::RunReport>& report() const { return this->Report; }
   /// The last finished run's curve report, when it curved the mesh.
-  const std::optional<labelmesher_cli::CurveReport>& curveReport() const { return this->Curves; }
+  const std::optional<labelmesher::report::CurveReport>& curveReport() const { return this->Curves; }
   QString summaryText() const;
   double progress() const; ///< of the run under way (or the last), [0, 1]
 
@@ -106,12 +106,12 @@ private:
 
   MeshingJob Job;
   vtkSmartPointer<vtkImageData> Image;
-  labelmesher::io::MaterialTable Materials;
+  labelmesher::MaterialTable Materials;
   QStringList Notes;
   QString ImagePath;
   labelmesher_cli::MeshingSettings RunSettings; ///< those of the run under way (or the last)
-  std::optional<labelmesher_cli::RunReport> Report;
-  std::optional<labelmesher_cli::CurveReport> Curves;
+  std::optional<labelmesher::report::RunReport> Report;
+  std::optional<labelmesher::report::CurveReport> Curves;
 
   widgets::ParameterPanel* Panel = nullptr;
   widgets::MeshView* View = nullptr;

@@ -2,7 +2,6 @@
 #include "MeshingJob.h"
 
 #include "vtkAlgorithm.h"
-#include "vtkBezierCurver.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkSmartPointer.h"
@@ -17,38 +16,6 @@ namespace labelmesher
 {
 namespace gui
 {
-namespace
-{
-/// Where each filter's progress lies in the whole run's: the stages' rough weights on real
-/// images (mesher and decimator, one streamed filter, take most of the time), over the stages run.
-class StageShares
-{
-public:
-  explicit StageShares(const labelmesher_cli::MeshingSettings& settings)
-  {
-    const double weights[2] = { settings.Decimate ? 1.0 : 0.3, settings.Curve ? 0.3 : 0.0 };
-    const double total = weights[0] + weights[1];
-    double start = 0.0;
-    for (int s = 0; s < 2; ++s)
-    {
-      this->Start[s] = start / total;
-      this->Share[s] = weights[s] / total;
-      start += weights[s];
-    }
-  }
-
-  /// The whole run's fraction when `running` has done `fraction` of its own work.
-  double Whole(vtkAlgorithm* running, double fraction) const
-  {
-    const int s = vtkBezierCurver::SafeDownCast(running) ? 1 : 0;
-    return this->Start[s] + this->Share[s] * fraction;
-  }
-
-private:
-  double Start[2] = {}, Share[2] = {};
-};
-} // namespace
-
 /// The state one worker owns; the window's thread reads it only after the thread ended.
 struct MeshingJob::Run
 {
@@ -110,21 +77,19 @@ bool MeshingJob::start(vtkImageData* image, const labelmesher_cli::MeshingSettin
   this->Current = run;
   this->Thread = QThread::create([this, run]() {
     const auto start = std::chrono::steady_clock::now();
-    const StageShares shares(run->Settings);
-    // Runs in this worker thread, on each progress report of the running filter.
-    const labelmesher_cli::FilterProgress progress = [this, run, shares](
+    // Runs in this worker thread, on each progress report of vtkLabelMesher (over the whole run).
+    const labelmesher_cli::FilterProgress progress = [this, run](
                                                        vtkAlgorithm* running, double fraction, const std::string& stage) {
       if (run->CancelRequested.load())
       {
         running->SetAbortExecute(1); // read by the filter right after this report
       }
-      const double whole = shares.Whole(running, fraction);
-      run->Fraction = whole;
+      run->Fraction = fraction;
       // Queued to the window's thread; a few hundred signals per run at most.
-      if (whole - run->LastSent >= 0.005 || whole >= 1.0)
+      if (fraction - run->LastSent >= 0.005 || fraction >= 1.0)
       {
-        run->LastSent = whole;
-        emit this->progressed(whole, QString::fromStdString(stage));
+        run->LastSent = fraction;
+        emit this->progressed(fraction, QString::fromStdString(stage));
       }
     };
     try

@@ -6,10 +6,11 @@
 
 #include "MeshFiles.h"
 
-#include "vtkLabelOctreeMesher.h"
+#include "vtkLabelMesher.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <vector>
 
@@ -62,15 +63,24 @@ int ParseCount(const std::string& option, const std::string& text, int minimum)
   return static_cast<int>(value);
 }
 
+/// "30" for 30.0: the proven bounds as the help text states them.
+std::string ProvenBound(int dimension)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", vtkLabelMesher::GetProvenAngleBound(dimension));
+  return text;
+}
+
 double ParseAngle(const std::string& text)
 {
   double value = -1.0;
   const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
   // The largest bound of either dimension here; the filters check the image's own.
-  const double largest = std::max(vtkLabelOctreeMesher::GetProvenAngleBound(2), vtkLabelOctreeMesher::GetProvenAngleBound(3));
+  const double largest = std::max(vtkLabelMesher::GetProvenAngleBound(2), vtkLabelMesher::GetProvenAngleBound(3));
   if (!ReadWhole(text, read, value) || !(value > 0.0 && value <= largest))
   {
-    throw UsageError("--min-angle expects degrees in (0, 30] (3D) or (0, 45] (2D), got '" + text + "'");
+    throw UsageError("--min-angle expects degrees in (0, " + ProvenBound(3) + "] (3D) or (0, " + ProvenBound(2) +
+      "] (2D), got '" + text + "'");
   }
   return value;
 }
@@ -143,7 +153,7 @@ struct Option
   const char* Long;  ///< "--output"
   const char* Value; ///< "FILE", or null: a switch, which takes no value
   bool CurveOnly;    ///< applies to `curve` only
-  const char* Help;  ///< lines, each after the first continued under the first
+  std::string Help;  ///< lines, each after the first continued under the first
   void (*Apply)(Reading& reading, const std::string& value);
 };
 
@@ -191,9 +201,10 @@ const std::vector<Option>& Options()
       [](Reading& r, const std::string& v) { r.Args.Report = v; } },
     { nullptr, "--min-angle", "DEG", false,
       "smallest angle the decimator may create, degrees:\n"
-      "(0, 30] in 3D, (0, 45] in 2D                [default 15]",
+      "(0, " + ProvenBound(3) + "] in 3D, (0, " + ProvenBound(2) + "] in 2D                [default 15]",
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
-    { nullptr, "--no-decimate", nullptr, false, "keep the initial mesh (angles >= 30 3D, 45 2D)",
+    { nullptr, "--no-decimate", nullptr, false,
+      "keep the initial mesh (angles >= " + ProvenBound(3) + " 3D, " + ProvenBound(2) + " 2D)",
       [](Reading& r, const std::string&) { ChooseDecimation(r, "--no-decimate"); } },
     { nullptr, "--decimate", nullptr, false, "decimate (the default)",
       [](Reading& r, const std::string&) { ChooseDecimation(r, "--decimate"); } },

@@ -11,7 +11,7 @@
 namespace labelmesher_cli
 {
 
-using labelmesher::io::VTKMessages;
+using labelmesher::VTKMessages;
 
 FilterMessages UpdateFilter(vtkAlgorithm* algorithm, const FilterProgress& progress)
 {

@@ -4,10 +4,10 @@
 
 /**
  * @file MeshingPipeline.h
- * The pipeline both front ends run: by default vtkLabelMesher (mesher and
- * decimator block by block, so that the whole initial mesh is never held);
- * with --no-decimate vtkLabelOctreeMesher alone; then (2D images, on request)
- * vtkBezierCurver on that mesh with the image.
+ * The CLI's and the viewer's binding of vtkLabelMesher, the one pipeline of
+ * every front end (mesher and decimator block by block; with --no-decimate the
+ * mesher alone; then, 2D images on request, the curver): settings in, the
+ * filter's outputs and one-line messages out.
  */
 
 #include "FilterRun.h"
@@ -52,10 +52,7 @@ struct MeshingSettings
 
 struct MeshingOutcome
 {
-  vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the final mesh
-  /// The mesher's output (Mesh itself) without decimation; null when decimated (streamed: the
-  /// initial mesh is never whole, and Mesh's field data tells about it).
-  vtkSmartPointer<vtkUnstructuredGrid> Initial;
+  vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the linear mesh (decimated unless Decimate is off)
   vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
   /// With Curve: the cubic Bezier mesh curved from Mesh. When CurveError is set (untangling
   /// failed) it is the curver's marked mesh (cell data Valid), to inspect, not to use.
@@ -68,8 +65,9 @@ struct MeshingOutcome
 /// True when one of the image's extents is a single slice (what the curver needs).
 bool IsTwoDimensional(vtkImageData* image);
 
-/// Runs the pipeline on `image`; `progress` sees each filter's own progress. Throws MeshingError
-/// (also for Curve on a 3D image, and when the curver produced no cells).
+/// Runs vtkLabelMesher on `image`; `progress` sees its progress over the whole run (setting
+/// AbortExecute there stops it). Throws MeshingError with the filter's error (also for Curve on a
+/// 3D image) or when it produced no cells.
 MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress);
 
 } // namespace labelmesher_cli

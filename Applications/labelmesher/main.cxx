@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /**
  * @file main.cxx
- * labelmesher: read a label image, run vtkLabelOctreeMesher and vtkMeshDecimator
- * (and for `curve` vtkBezierCurver on the 2D mesh), write the mesh and the report. Exit status 0 on success, 1 when the input or the run fails, 2 on
- * a bad command line; every failure is reported as one line on stderr.
+ * labelmesher: read a label image, run vtkLabelMesher (mesh, decimate, and for
+ * `curve` curve the 2D mesh), write the mesh and the report (RunReport,
+ * CurveReport). Exit status 0 on success, 1 when the input or the run fails, 2
+ * on a bad command line; every failure is reported as one line on stderr.
  */
 
 #include "Arguments.h"
 #include "ColorTableReader.h"
-#include "CurveReport.h"
+#include "Report/CurveReport.h"
 #include "ImageReader.h"
 #include "MeshingPipeline.h"
 #include "ProgressBar.h"
-#include "Report.h"
+#include "Report/RunReport.h"
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
@@ -34,6 +35,7 @@
 
 using namespace labelmesher_cli;
 using namespace labelmesher::io;
+using namespace labelmesher::report;
 
 namespace
 {
@@ -50,7 +52,7 @@ double Seconds(std::chrono::steady_clock::time_point since)
 
 /// Every output of the run, each whole or not at all; returns the files written.
 std::vector<std::string> WriteOutputs(const Arguments& args, vtkUnstructuredGrid* mesh, vtkPolyData* interfaces,
-  const labelmesher::io::MaterialTable& table)
+  const labelmesher::MaterialTable& table)
 {
   labelmesher::io::WriteOptions options;
   options.GmshVersion22 = args.GmshVersion22;
@@ -98,12 +100,12 @@ int Run(const Arguments& args)
   const auto readStart = std::chrono::steady_clock::now();
   LabeledImage input = ReadLabeledImage(args.Input);
   vtkSmartPointer<vtkImageData> image = input.Image;
-  labelmesher::io::MaterialTable table = input.Materials;
+  labelmesher::MaterialTable table = input.Materials;
   if (!args.Labels.empty())
   {
     // The colour table names what it lists; other names (a .seg.nrrd's) stay.
-    const labelmesher::io::MaterialTable named = ReadColorTable(args.Labels);
-    for (const labelmesher::io::MaterialInfo& m : named.Entries())
+    const labelmesher::MaterialTable named = ReadColorTable(args.Labels);
+    for (const labelmesher::MaterialInfo& m : named.Entries())
     {
       table.Set(m);
     }
@@ -139,7 +141,7 @@ int Run(const Arguments& args)
   const std::vector<std::string> written = curve
     ? WriteOutputs(args, meshed.Curved, nullptr, table)
     : WriteOutputs(args, meshed.Mesh, meshed.Interfaces, table);
-  RunReport report = MakeReport(args.Input, settings, image, meshed.Mesh, meshed.Initial);
+  RunReport report = MakeReport(args.Input, image, meshed.Mesh);
   report.Outputs = written;
   report.Materials = table;
   report.Notes = input.Notes;
@@ -157,7 +159,7 @@ int Run(const Arguments& args)
     return 0;
   }
 
-  CurveReport curved = MakeCurveReport(report, settings, meshed.Curved);
+  CurveReport curved = MakeCurveReport(report, meshed.Curved);
   curved.Timings.emplace_back("write", Seconds(writeStart));
   WriteReport(args.Report, curved, WriteCurveJson);
   if (!args.Quiet)
@@ -181,7 +183,7 @@ int Run(const Arguments& args)
 
 int main(int argc, char* argv[])
 {
-  SilenceVTKOutputWindow();
+  labelmesher::SilenceVTKOutputWindow();
   itk::Object::GlobalWarningDisplayOff(); // ITK's warnings; its errors arrive as exceptions
   Arguments args;
   try

@@ -72,18 +72,18 @@ bool vtkLabelImageReader::ReadIfChanged()
       throw labelmesher::io::InputError("no file name given");
     }
     labelmesher::io::LabeledImage read = labelmesher::io::ReadLabeledImage(this->FileName);
-    labelmesher::io::MaterialTable table = read.Materials;
+    labelmesher::MaterialTable table = read.Materials;
     if (this->LabelTableFileName && *this->LabelTableFileName)
     {
-      const labelmesher::io::MaterialTable names = labelmesher::io::ReadColorTable(this->LabelTableFileName);
-      for (const labelmesher::io::MaterialInfo& entry : names.Entries())
+      const labelmesher::MaterialTable names = labelmesher::io::ReadColorTable(this->LabelTableFileName);
+      for (const labelmesher::MaterialInfo& entry : names.Entries())
       {
         table.Set(entry);
       }
     }
     if (!table.Empty())
     {
-      labelmesher::io::StoreMaterialTable(read.Image->GetFieldData(), table);
+      labelmesher::StoreMaterialTable(read.Image->GetFieldData(), table);
     }
     this->Image = read.Image;
     this->Notes = read.Notes;

@@ -89,7 +89,7 @@ void vtkLabelMeshWriter::WriteData()
     labelmesher::io::WriteOptions options;
     options.GmshVersion22 = this->GmshVersion22;
     options.StlPerInterface = this->StlPerInterface;
-    const labelmesher::io::MaterialTable table = labelmesher::io::ReadMaterialTable(mesh->GetFieldData());
+    const labelmesher::MaterialTable table = labelmesher::ReadMaterialTable(mesh->GetFieldData());
     labelmesher::io::MeshFileWriter(mesh, interfaces, table, options).Write(this->FileName);
     return;
   }

@@ -3,8 +3,9 @@
 volume into a tetrahedral (or, for one slice, triangle) mesh with LabelMesher's
 guarantees, as a model node in the input's RAS geometry.
 
-Only Slicer glue lives here; the meshing, the IJK to RAS placement and the
-quality report are in LabelMesherLib/meshing.py, which runs without Slicer.
+Only Slicer glue lives here; the IJK to RAS placement and the binding of
+vtkLabelMesher and vtkLabelMeshReport (the pipeline and the report every front
+end shares) are in LabelMesherLib/meshing.py, which runs without Slicer.
 """
 import logging
 from typing import Annotated, Optional
@@ -20,7 +21,7 @@ from slicer.ScriptedLoadableModule import (ScriptedLoadableModule, ScriptedLoada
 from slicer.parameterNodeWrapper import WithinRange, parameterNodeWrapper
 from slicer.util import VTKObservationMixin
 
-from LabelMesherLib import Material, MeshingCancelled, MeshingError, MeshingParameters, mesh_labels, summary_text
+from LabelMesherLib import Material, MeshingCancelled, MeshingError, MeshingParameters, mesh_labels
 
 
 class LabelMesher(ScriptedLoadableModule):
@@ -32,12 +33,24 @@ class LabelMesher(ScriptedLoadableModule):
         self.parent.contributors = ["The LabelMesher developers"]
         self.parent.helpText = (
             "Meshes the chosen segments (or a labelmap volume) into tetrahedra whose dihedral angles are "
-            "at least 30 degrees (after decimation: at least the angle bound), within the two distance "
+            f"at least {labelmesher.vtkLabelMesher.GetProvenAngleBound(3):g} degrees (after decimation: at least "
+            "the angle bound), within the two distance "
             "bounds of the segments (in voxels of the smallest spacing), with the topology of every "
             "segment kept. A single slice can also be curved: cubic Bezier triangles, each proven valid, "
             "whose curves keep both distance bounds. The report below the Apply button gives the measured values.")
         self.parent.acknowledgementText = (
             "Octree refinement and decimation after J. Xu, PhD dissertation, Old Dominion University, 2020.")
+
+
+# The largest minimum angle a user may ask for: the larger of the proven bounds (a slice's); meshing.py
+# holds each image to its own dimension's.
+MINIMUM_ANGLE_LIMIT = max(labelmesher.vtkLabelMesher.GetProvenAngleBound(2),
+                          labelmesher.vtkLabelMesher.GetProvenAngleBound(3))
+
+
+def limitAngleSlider(slider):
+    """The .ui's slider ends where the proven bounds do (the filters' figure, not a copy of it)."""
+    slider.maximum = MINIMUM_ANGLE_LIMIT
 
 
 @parameterNodeWrapper
@@ -49,9 +62,7 @@ class LabelMesherParameterNode:
     imageToMeshDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
     meshToImageDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
     decimate: bool = True
-    # Up to the larger proven bound (45 degrees, one slice); meshing.py checks the image's own (30 in 3D).
-    minimumAngle: Annotated[float, WithinRange(1.0, max(labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(2),
-                                                        labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(3)))] = 15.0
+    minimumAngle: Annotated[float, WithinRange(1.0, MINIMUM_ANGLE_LIMIT)] = 15.0
     includeBackground: bool = False
     curve: bool = False
     smoothness: Annotated[int, WithinRange(1, 2)] = 1
@@ -75,6 +86,7 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
         uiWidget = slicer.util.loadUI(self.resourcePath("UI/LabelMesher.ui"))
         self.layout.addWidget(uiWidget)
         self.ui = slicer.util.childWidgetVariables(uiWidget)
+        limitAngleSlider(self.ui.minimumAngleSlider)
         uiWidget.setMRMLScene(slicer.mrmlScene)
         self.logic = LabelMesherLogic()
         self.addObserver(slicer.mrmlScene, slicer.mrmlScene.StartCloseEvent, self.onSceneStartClose)
@@ -154,7 +166,7 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
             with slicer.util.tryWithErrorDisplay("LabelMesher failed unexpectedly; no mesh was made."):
                 try:
                     p = self._parameterNode
-                    report = self.logic.process(
+                    result = self.logic.process(
                         p.inputSegmentation, self.checkedSegmentIds(), p.inputLabelmap, p.outputModel,
                         MeshingParameters(image_to_mesh_distance=p.imageToMeshDistance,
                                           mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
@@ -162,7 +174,7 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
                                           curve=p.curve, smoothness=p.smoothness, tension=p.tension,
                                           block_cells=p.blockCells, memory_limit=p.memoryLimit),
                         progress, lambda: self._cancelRequested)
-                    self.ui.summaryText.plainText = summary_text(report)
+                    self.ui.summaryText.plainText = result.summary
                 except MeshingCancelled:
                     self.ui.summaryText.plainText = "Cancelled: no mesh was made."
                 except MeshingError as e:
@@ -220,6 +232,8 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
 
     def process(self, segmentationNode, segmentIds, labelmapNode, outputModel, parameters,
                 progress=None, shouldAbort=None):
+        """Meshes the chosen segments (or the labelmap) into outputModel; returns the MeshingResult
+        (its report and summary)."""
         if segmentationNode:
             labels, matrix, materials = self.labelArrayFromSegmentation(segmentationNode, segmentIds)
         elif labelmapNode:
@@ -239,8 +253,8 @@ class LabelMesherLogic(ScriptedLoadableModuleLogic):
         display.SetScalarVisibility(True)
         display.SetAndObserveColorNodeID(self.materialColorNode(materials, display.GetColorNode()).GetID())
         display.SetScalarRangeFlag(slicer.vtkMRMLDisplayNode.UseColorNodeScalarRange)
-        logging.info("LabelMesher: %s", summary_text(result.report).replace("\n", "; "))
-        return result.report
+        logging.info("LabelMesher: %s", result.summary.replace("\n", "; "))
+        return result
 
     def materialsFromColorTable(self, labelmapNode, labels):
         colors = labelmapNode.GetDisplayNode().GetColorNode() if labelmapNode.GetDisplayNode() else None
@@ -295,7 +309,7 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
         slicer.modules.segmentations.logic().ImportLabelmapToSegmentationNode(volume, segmentation)
         ids = [segmentation.GetSegmentation().GetNthSegmentID(i) for i in range(2)]
         model = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode")
-        report = LabelMesherLogic().process(segmentation, ids, None, model, MeshingParameters())
+        report = LabelMesherLogic().process(segmentation, ids, None, model, MeshingParameters()).report
         self.assertGreater(model.GetMesh().GetNumberOfCells(), 0)
         self.assertGreaterEqual(report["quality"]["minimum_angle_degrees"], 15.0)
         self.assertTrue(report["fidelity"]["bounds_certified"])
@@ -309,8 +323,8 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
         labels[0][(xx - 20) ** 2 + (yy - 20) ** 2 <= 5 ** 2] = 2
         volume = slicer.util.addVolumeFromArray(labels, nodeClassName="vtkMRMLLabelMapVolumeNode")
         model = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode")
-        report = LabelMesherLogic().process(None, [], volume, model, MeshingParameters(curve=True))
+        curve = LabelMesherLogic().process(None, [], volume, model, MeshingParameters(curve=True)).report["curve"]
         self.assertEqual(model.GetMesh().GetCellType(0), vtk.VTK_BEZIER_TRIANGLE)
-        self.assertTrue(report["curved_mesh"]["valid"])
-        self.assertTrue(report["curved_mesh"]["within_bounds"])
+        self.assertTrue(curve["validity"]["valid"])
+        self.assertTrue(curve["curved_mesh"]["within_bounds"])
         self.delayDisplay("LabelMesher curved slice test passed")

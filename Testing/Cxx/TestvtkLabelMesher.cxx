@@ -1,19 +1,24 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The VTK adapter vtkLabelMesher (Filters/vtkLabelMesher.h), mesher and
-// decimator streamed block by block, as a pipeline uses it: ports, the cells
+// The VTK adapter vtkLabelMesher (Filters/vtkLabelMesher.h), the one pipeline
+// of every front end (mesher and decimator streamed block by block, or the
+// mesher alone; then, 2D, the curver), as a pipeline uses it: ports, the cells
 // and their arrays, the field data (parameters, counts, streaming figures,
 // measured guarantees), the physical placement, one block equal to
-// vtkLabelOctreeMesher + vtkMeshDecimator, many blocks keeping the measured
-// guarantees, one error and an empty output for bad input, and abort. The
-// core has its own tests (Streaming/TestStreamedPipeline.cxx).
+// vtkLabelOctreeMesher + vtkMeshDecimator, Decimate off equal to the mesher,
+// Curve equal to vtkBezierCurver on the linear mesh, many blocks keeping the
+// measured guarantees, one progress over the whole run, one error and an empty
+// output for bad input, and abort in every stage. The core has its own tests
+// (Streaming/TestStreamedPipeline.cxx).
 
 #include "FilterTestSupport.h"
 
 #include "LabelMesherArrayNames.h"
+#include "vtkBezierCurver.h"
 #include "vtkLabelMesher.h"
 #include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
@@ -27,6 +32,8 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace arrays = labelmesher::arrays;
 using namespace labelmesher::testing;
@@ -78,7 +85,7 @@ TEST(vtkLabelMesher, MeshesAndDecimatesWithItsArraysAndFieldData)
   image->SetDirectionMatrix(0, 1, 0, 1, 0, 0, 0, 0, 1); // a reflection
   vtkNew<vtkLabelMesher> mesher;
   EXPECT_EQ(mesher->GetNumberOfInputPorts(), 1);
-  EXPECT_EQ(mesher->GetNumberOfOutputPorts(), 2);
+  EXPECT_EQ(mesher->GetNumberOfOutputPorts(), 3);
   EXPECT_STREQ(mesher->GetInputPortInformation(0)->Get(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE()), "vtkImageData");
   mesher->SetInputData(image);
   mesher->SetImageToMeshDistance(1.5);
@@ -206,4 +213,148 @@ TEST(vtkLabelMesher, AbortStopsTheRunWithAnEmptyOutputAndAWarning)
   EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
   ASSERT_EQ(warnings.Messages.size(), 1u);
   EXPECT_NE(warnings.Messages[0].find("aborted"), std::string::npos);
+}
+
+TEST(vtkLabelMesher, DecimateOffIsTheMesherExactly)
+{
+  auto image = MakeVtkImage(TwoBalls(20), { 0.7, 0.7, 0.7 }, { 1, 2, 3 });
+  vtkNew<vtkLabelMesher> composite;
+  composite->SetInputData(image);
+  composite->DecimateOff();
+  composite->SetImageToMeshDistance(1.0);
+  composite->Update();
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->SetImageToMeshDistance(1.0);
+  mesher->Update();
+  ASSERT_GT(composite->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_TRUE(SameGrid(composite->GetOutput(), mesher->GetOutput()));
+  EXPECT_EQ(composite->GetInterfacesOutput()->GetNumberOfCells(), mesher->GetInterfacesOutput()->GetNumberOfCells());
+  EXPECT_EQ(composite->GetCurvedOutput()->GetNumberOfCells(), 0);
+  // The mesher's field data, with no decimation's.
+  EXPECT_TRUE(std::isnan(FieldScalar(composite->GetOutput(), arrays::Merges)));
+  EXPECT_EQ(FieldScalar(composite->GetOutput(), arrays::MinimumAngle), FieldScalar(mesher->GetOutput(), arrays::MinimumAngle));
+  EXPECT_GE(FieldScalar(composite->GetOutput(), arrays::MinimumAngle), vtkLabelMesher::GetProvenAngleBound(3) - 1e-9);
+}
+
+TEST(vtkLabelMesher, CurveIsTheCurverOnTheLinearMesh)
+{
+  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+  vtkNew<vtkLabelMesher> composite;
+  composite->SetInputData(image);
+  composite->CurveOn();
+  composite->SetSmoothness(2);
+  MessageRecorder errors(composite, vtkCommand::ErrorEvent);
+  composite->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
+
+  vtkNew<vtkLabelMesher> linear;
+  linear->SetInputData(image);
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(0, linear->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  curver->SetSmoothness(2);
+  curver->Update();
+  vtkUnstructuredGrid* curved = composite->GetCurvedOutput();
+  ASSERT_GT(curved->GetNumberOfCells(), 0);
+  EXPECT_EQ(curved->GetCellType(0), VTK_BEZIER_TRIANGLE);
+  EXPECT_TRUE(SameGrid(curved, curver->GetOutput()));
+  EXPECT_TRUE(SameGrid(composite->GetOutput(), linear->GetOutput())) << "port 0 stays the linear mesh";
+  EXPECT_EQ(FieldScalar(curved, arrays::Smoothness), 2.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+}
+
+TEST(vtkLabelMesher, CurveOnAThreeDimensionalImageIsOneError)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage(MakeBallLabels(12, 4.0)));
+  mesher->CurveOn();
+  MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+  mesher->Update();
+  ASSERT_EQ(errors.Messages.size(), 1u);
+  EXPECT_NE(errors.Messages[0].find("2D image"), std::string::npos) << errors.Messages[0];
+  EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(vtkLabelMesher, ProgressRunsOnceFromZeroToOneOverEveryStage)
+{
+  for (const bool decimate : { true, false })
+  {
+    auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+    vtkNew<vtkLabelMesher> mesher;
+    mesher->SetInputData(image);
+    mesher->SetDecimate(decimate);
+    mesher->CurveOn();
+    struct Seen
+    {
+      std::vector<double> Fractions;
+      std::vector<std::string> Stages;
+    } seen;
+    vtkNew<vtkCallbackCommand> record;
+    record->SetClientData(&seen);
+    record->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
+      auto* s = static_cast<Seen*>(client);
+      s->Fractions.push_back(*static_cast<double*>(data));
+      const char* text = static_cast<vtkAlgorithm*>(caller)->GetProgressText();
+      s->Stages.emplace_back(text ? text : "");
+    });
+    mesher->AddObserver(vtkCommand::ProgressEvent, record);
+    mesher->Update();
+    ASSERT_FALSE(seen.Fractions.empty());
+    for (std::size_t i = 1; i < seen.Fractions.size(); ++i)
+    {
+      ASSERT_GE(seen.Fractions[i], seen.Fractions[i - 1]) << "step " << i << " (" << seen.Stages[i] << ")";
+    }
+    EXPECT_EQ(seen.Fractions.back(), 1.0);
+    // The curver's stages come last, within the curving's share, after the mesher's.
+    std::size_t firstCurve = 0;
+    while (firstCurve < seen.Stages.size() && seen.Stages[firstCurve].rfind("Smoothing boundaries", 0) != 0)
+    {
+      ++firstCurve;
+    }
+    ASSERT_LT(firstCurve, seen.Stages.size()) << "the curver reported through the composite";
+    EXPECT_GE(seen.Fractions[firstCurve], 0.5) << "decimate " << decimate; // meshing weighs as much or more
+    EXPECT_LT(seen.Fractions[firstCurve], 1.0) << "decimate " << decimate;
+  }
+}
+
+TEST(vtkLabelMesher, AbortInEveryStageEmptiesEveryOutput)
+{
+  struct Case
+  {
+    bool Decimate;
+    const char* Stage;
+  };
+  // The mesher alone (its octree stage), and the curver (after a complete linear mesh).
+  for (const Case& c : { Case{ false, "fill" }, Case{ true, "Smoothing boundaries" } })
+  {
+    vtkNew<vtkLabelMesher> mesher;
+    mesher->SetInputData(MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40));
+    mesher->SetDecimate(c.Decimate);
+    mesher->CurveOn();
+    AbortAtStage abort(mesher, c.Stage);
+    MessageRecorder warnings(mesher, vtkCommand::WarningEvent);
+    MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+    mesher->Update();
+    EXPECT_TRUE(abort.Reached) << c.Stage;
+    EXPECT_TRUE(errors.Messages.empty()) << c.Stage << ": " << errors.Messages.front();
+    EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0) << c.Stage;
+    EXPECT_EQ(mesher->GetInterfacesOutput()->GetNumberOfCells(), 0) << c.Stage;
+    EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0) << c.Stage;
+    ASSERT_FALSE(warnings.Messages.empty()) << c.Stage;
+    EXPECT_NE(warnings.Messages[0].find("aborted"), std::string::npos) << warnings.Messages[0];
+  }
+}
+
+TEST(vtkLabelMesher, MinimumAngleIsClampedToTheProvenBounds)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  const double largest = std::max(vtkLabelMesher::GetProvenAngleBound(2), vtkLabelMesher::GetProvenAngleBound(3));
+  mesher->SetMinimumAngle(largest + 10.0);
+  EXPECT_EQ(mesher->GetMinimumAngle(), largest);
+  mesher->SetMinimumAngle(-1.0);
+  EXPECT_EQ(mesher->GetMinimumAngle(), 0.0);
+  EXPECT_STREQ(vtkLabelMesher::GetMaterialArrayName(), arrays::Material);
+  EXPECT_STREQ(vtkLabelMesher::GetMaterialNameArrayName(), arrays::MaterialName);
 }

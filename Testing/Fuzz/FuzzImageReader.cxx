@@ -69,7 +69,7 @@ std::size_t HeaderSize(const std::uint8_t* data, std::size_t size)
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-  labelmesher::io::SilenceVTKOutputWindow();
+  labelmesher::SilenceVTKOutputWindow();
   itk::Object::GlobalWarningDisplayOff();
   char folder[] = "/tmp/labelmesher-fuzz-XXXXXX";
   if (!mkdtemp(folder))

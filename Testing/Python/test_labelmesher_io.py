@@ -6,11 +6,14 @@ checks of Testing/Support/export_checks.py that the CLI's export tests use) and 
 the .vtu of the same mesh: points, cells, materials and their names, interface faces. Also the
 shared gzip NRRD (which VTK's own NRRD reader misreads) read voxel for voxel as numpy decodes it,
 a 3D Slicer segmentation's names reaching every file, and failed reads and writes: one line, an
-empty output, Write() returning 0 and no file left behind.
+empty output, Write() returning 0 and no file left behind. The report (vtkLabelMeshReport) is the
+CLI's: the same JSON as `labelmesher mesh|curve --report` on the same image.
 
 Run with PYTHONPATH=<build>/lib/python3/dist-packages (ctest sets it)."""
 
+import json
 import os
+import subprocess
 import sys
 import tempfile
 import unittest
@@ -224,3 +227,56 @@ class WriterTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ReportTest(unittest.TestCase):
+    """vtkLabelMeshReport from Python and the CLI's --report: one report, the same figures."""
+
+    # What only the CLI knows (file names, the reader's notes, its own timings and memory).
+    CALLER_KEYS = {"input", "output", "outputs", "notes", "timings", "total_seconds", "memory"}
+
+    def report_of_cli(self, command, image, *options):
+        cli = os.environ.get("LABELMESHER_CLI")
+        if not cli:
+            self.skipTest("LABELMESHER_CLI is not set (ctest sets it)")
+        with tempfile.TemporaryDirectory() as folder:
+            report = os.path.join(folder, "report.json")
+            subprocess.run([cli, command, image, "-o", os.path.join(folder, "mesh.vtu"), "--report", report, "-q",
+                            *options], check=True)
+            with open(report) as f:
+                return json.load(f)
+
+    def report_of_python(self, image, **settings):
+        reader, errors = read(image)
+        self.assertEqual(errors, [])
+        mesher = labelmesher.vtkLabelMesher()
+        mesher.SetInputConnection(reader.GetOutputPort())
+        for name, value in settings.items():
+            getattr(mesher, "Set" + name)(value)
+        mesher.Update()
+        builder = labelmesher.vtkLabelMeshReport()
+        builder.SetImage(reader.GetOutput())
+        builder.SetMesh(mesher.GetOutput())
+        if mesher.GetCurve():
+            builder.SetCurvedMesh(mesher.GetCurvedOutput())
+        self.assertTrue(builder.GetGuaranteesHold())
+        return json.loads(builder.GetJSON()), builder.GetSummary()
+
+    def without_caller_keys(self, report):
+        return {k: v for k, v in report.items() if k not in self.CALLER_KEYS}
+
+    def test_mesh_report_is_the_clis(self):
+        ours, summary = self.report_of_python(RAT_HEAD, MinimumAngle=20.0)
+        cli = self.report_of_cli("mesh", RAT_HEAD, "--min-angle", "20")
+        self.assertEqual(self.without_caller_keys(ours), self.without_caller_keys(cli))
+        self.assertEqual(ours["quality"]["angle_bound_degrees"], 20.0)
+        self.assertIn("Both bounds certified", summary)
+
+    def test_curve_report_is_the_clis(self):
+        image = os.path.join(SHARED, "2d", "digimouse_sagittal.nrrd")
+        ours, summary = self.report_of_python(image, Curve=True, Smoothness=2)
+        cli = self.report_of_cli("curve", image, "--smoothness", "2")
+        self.assertEqual(self.without_caller_keys(ours), self.without_caller_keys(cli))
+        self.assertEqual(ours["command"], "curve")
+        self.assertTrue(ours["validity"]["valid"])
+        self.assertIn("every cell proven valid", summary)

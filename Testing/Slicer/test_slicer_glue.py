@@ -115,7 +115,7 @@ class ApplyErrorTest(unittest.TestCase):
 
 class AngleRangeTest(unittest.TestCase):
     """The minimum angle a user can set reaches the proven bound of a slice (45 degrees), not only
-    the 3D one (30), in the parameter node and in the .ui slider alike; the logic then holds each
+    the 3D one (30), in the parameter node and in the slider alike; the logic then holds each
     image to its own dimension's bound."""
 
     def test_the_angle_reaches_the_bound_of_a_slice(self):
@@ -126,12 +126,15 @@ class AngleRangeTest(unittest.TestCase):
         import labelmesher
         hints = typing.get_type_hints(LabelMesher.LabelMesherParameterNode, include_extras=True)
         low, high = hints["minimumAngle"].__metadata__[0]
-        self.assertEqual(high, labelmesher.vtkLabelOctreeMesher.GetProvenAngleBound(2))
+        self.assertEqual(high, labelmesher.vtkLabelMesher.GetProvenAngleBound(2))
         self.assertEqual(high, 45.0)
+        # The .ui states no bound of its own: setup() sets the slider's end from the filters'.
         ui = os.path.join(os.path.dirname(LabelMesher.__file__), "Resources", "UI", "LabelMesher.ui")
         slider = next(w for w in ET.parse(ui).iter("widget") if w.get("name") == "minimumAngleSlider")
-        maximum = next(p for p in slider.findall("property") if p.get("name") == "maximum")
-        self.assertEqual(float(maximum.find("double").text), high)
+        self.assertFalse([p for p in slider.findall("property") if p.get("name") == "maximum"])
+        widget = types.SimpleNamespace(maximum=99.0)  # ctkSliderWidget's own default
+        LabelMesher.limitAngleSlider(widget)
+        self.assertEqual(widget.maximum, high)
         with self.assertRaisesRegex(MeshingError, r"\(0, 30\] degrees for a 3D image"):
             MeshingParameters(minimum_angle=40.0).validate(3)
         MeshingParameters(minimum_angle=40.0).validate(2)

@@ -15,7 +15,7 @@ from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE
 
 from label_nrrd import read_label_nrrd
 from LabelMesherLib.meshing import (Material, MeshingCancelled, MeshingError, MeshingParameters,
-                                    mesh_labels, placement_from_ijk_to_ras, summary_text)
+                                    mesh_labels, placement_from_ijk_to_ras)
 
 DATA = os.environ.get("LABELMESHER_DATA", os.path.join(os.path.dirname(__file__), "../../../shared/data"))
 
@@ -111,11 +111,13 @@ class ObliquePlacementTest(unittest.TestCase):
         for result in (self.framed, self.placed):
             check_guarantees(self, result.report, 15.0)
             self.assertLess(result.report["decimation"]["cells_after"], result.report["decimation"]["cells_before"])
-        self.assertEqual(self.placed.report["material_table"], [{"label": 1, "name": "rat head"}])
+        self.assertEqual([(m["label"], m["name"], m["color"]) for m in self.placed.report["material_table"]],
+                         [(1, "rat head", [0.8, 0.5, 0.4])])
         fd = self.placed.mesh.GetFieldData()
         self.assertEqual(fd.GetAbstractArray("MaterialName").GetValue(0), "rat head")
         self.assertEqual(fd.GetArray("MaterialColor").GetTuple3(0), (0.8, 0.5, 0.4))
-        self.assertEqual(self.framed.report["material_table"], [{"label": 1, "name": "label_1"}])
+        self.assertEqual([(m["label"], m["name"], m["color"]) for m in self.framed.report["material_table"]],
+                         [(1, "label_1", None)])
         bounds = self.placed.interfaces.GetBounds()
         mesh_bounds = self.placed.mesh.GetBounds()
         np.testing.assert_allclose(bounds, mesh_bounds, atol=1e-9)  # interfaces placed with the mesh
@@ -186,19 +188,20 @@ class CurvedSliceTest(unittest.TestCase):
         self.assertEqual(self.result.report["mesh"]["cell_type"], "triangle")
 
     def test_curved_report_states_the_guarantees(self):
-        c = self.result.report["curved_mesh"]
+        curve = self.result.report["curve"]  # `labelmesher curve --report`'s JSON
+        c, validity = curve["curved_mesh"], curve["validity"]
         self.assertEqual(c["cells"], self.result.mesh.GetNumberOfCells())
-        self.assertEqual(c["smoothness"], 2)
-        self.assertTrue(c["valid"])
-        self.assertEqual(c["invalid_cells"], 0)
-        self.assertGreater(c["minimum_scaled_jacobian"], 0.0)
+        self.assertEqual(curve["parameters"]["smoothness"], 2)
+        self.assertTrue(validity["valid"])
+        self.assertEqual(validity["invalid_cells"], 0)
+        self.assertGreater(validity["minimum_scaled_jacobian"], 0.0)
         self.assertGreater(c["curved_edges"], 0)
         self.assertEqual(c["interface_crossings"], 0)
         self.assertTrue(c["topology_matches"])
         for side in ("image_to_mesh", "mesh_to_image"):
             self.assertLessEqual(c[f"measured_{side}"], 2.0 + c["measure_resolution"] + 1e-9)
         self.assertTrue(c["within_bounds"])
-        self.assertIn("every cell proven valid", summary_text(self.result.report))
+        self.assertIn("every cell proven valid", self.result.summary)
 
     def test_every_curved_cell_is_valid_by_sampled_jacobian(self):
         mesh = self.result.mesh

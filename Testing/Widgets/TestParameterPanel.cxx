@@ -4,9 +4,7 @@
 // values reaching the filters.
 #include "ParameterPanel.h"
 
-#include "vtkBezierCurver.h"
-#include "vtkLabelOctreeMesher.h"
-#include "vtkMeshDecimator.h"
+#include "vtkLabelMesher.h"
 #include "vtkNew.h"
 
 #include <QCheckBox>
@@ -195,16 +193,21 @@ private slots:
     panel.setMinimumAngle(33.0);
     panel.setSmoothness(2);
     panel.setTension(0.25);
-    vtkNew<vtkLabelOctreeMesher> mesher;
-    vtkNew<vtkMeshDecimator> decimator;
-    vtkNew<vtkBezierCurver> curver;
-    panel.applyTo(mesher, decimator, curver);
-    QCOMPARE(mesher->GetImageToMeshDistance(), 1.5);
-    QCOMPARE(mesher->GetMeshToImageDistance(), 0.5);
-    QCOMPARE(decimator->GetMinimumAngle(), 33.0);
-    QCOMPARE(curver->GetSmoothness(), 2);
-    QCOMPARE(curver->GetTension(), 0.25);
-    panel.applyTo(nullptr, nullptr, nullptr); // any filter may be absent
+    panel.setCurve(true);
+    panel.setBlockCells(5000);
+    panel.setMemoryLimit(900.0);
+    vtkNew<vtkLabelMesher> pipeline;
+    panel.applyTo(pipeline);
+    QCOMPARE(pipeline->GetImageToMeshDistance(), 1.5);
+    QCOMPARE(pipeline->GetMeshToImageDistance(), 0.5);
+    QCOMPARE(pipeline->GetDecimate(), true);
+    QCOMPARE(pipeline->GetMinimumAngle(), 33.0);
+    QCOMPARE(pipeline->GetCurve(), true);
+    QCOMPARE(pipeline->GetSmoothness(), 2);
+    QCOMPARE(pipeline->GetTension(), 0.25);
+    QCOMPARE(pipeline->GetBlockCells(), vtkIdType(5000));
+    QCOMPARE(pipeline->GetMemoryLimit(), 900.0);
+    panel.applyTo(nullptr); // nothing to set
   }
 };
 

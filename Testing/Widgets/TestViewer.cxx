@@ -115,7 +115,7 @@ private slots:
 
     // The guarantees, from the report (the CLI's figures).
     QVERIFY(Window->report().has_value());
-    const labelmesher_cli::RunReport& r = *Window->report();
+    const labelmesher::report::RunReport& r = *Window->report();
     QVERIFY(r.Measured());
     QVERIFY(r.Decimation.has_value());
     QVERIFY2(*r.MinimumAngle >= 15.0 - 1e-9, qPrintable(QString::number(*r.MinimumAngle)));
@@ -317,7 +317,7 @@ private slots:
     QCOMPARE(Window->parameters()->minimumAngle(), 40.0);
     QVERIFY(Window->startMeshing());
     QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
-    const labelmesher_cli::RunReport& r = *Window->report();
+    const labelmesher::report::RunReport& r = *Window->report();
     QCOMPARE(r.MeshDimension, 2);
     QVERIFY2(*r.MinimumAngle >= 40.0 - 1e-9, qPrintable(QString::number(*r.MinimumAngle)));
     QCOMPARE(r.HausdorffCertified.value_or(0), 1.0);
@@ -363,7 +363,7 @@ private slots:
 
     // The curver's guarantees, from the report (the CLI's curve figures).
     QVERIFY(Window->curveReport().has_value());
-    const labelmesher_cli::CurveReport& c = *Window->curveReport();
+    const labelmesher::report::CurveReport& c = *Window->curveReport();
     QCOMPARE(c.Smoothness, 2);
     QVERIFY(c.Valid());
     QCOMPARE(c.InvalidCells, 0LL);

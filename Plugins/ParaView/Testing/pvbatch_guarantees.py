@@ -95,4 +95,25 @@ if dimension == 2:
     assert field(curved, "InvalidCells")[0] == 0, "Bezier Curver left invalid cells"
     assert field(curved, "InterfaceCrossings")[0] == 0, "curved interfaces cross"
     print(f"Bezier Curver: {curved.GetNumberOfCells()} cells, all valid, no crossing")
+
+    # Every stage in the one filter: the same curved mesh on port 2, the linear mesh on port 0.
+    everything = LabelMesher(Input=image)
+    everything.MinimumAngle = 15.0
+    everything.BlockCells = 0  # one block: the mesher followed by the decimator, as above
+    everything.Curve = 1
+    everything.UpdatePipeline()
+    linear = servermanager.Fetch(everything, idx=0)
+    all_curved = servermanager.Fetch(everything, idx=2)
+    assert linear.GetNumberOfCells() == decimated.GetNumberOfCells(), "port 0 is not the decimated mesh"
+    assert all_curved.GetNumberOfCells() == curved.GetNumberOfCells(), "port 2 is not the curver's mesh"
+    assert all_curved.GetCellType(0) == 76, "port 2 holds no Bezier triangles"  # VTK_BEZIER_TRIANGLE
+    assert field(all_curved, "InvalidCells")[0] == 0, "Label Mesher's curves left invalid cells"
+    print(f"Label Mesher (all stages): {all_curved.GetNumberOfCells()} curved cells on port 2")
+
+    initial_only = LabelMesher(Input=image)
+    initial_only.Decimate = 0
+    initial_only.IncludeBackground = 1
+    initial_only.UpdatePipeline()
+    assert servermanager.Fetch(initial_only).GetNumberOfCells() == initial.GetNumberOfCells(), \
+        "Decimate off is not the mesher's mesh"
 print("OK")

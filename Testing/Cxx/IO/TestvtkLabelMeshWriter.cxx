@@ -53,13 +53,13 @@ protected:
   static void SetUpTestSuite()
   {
     vtkSmartPointer<vtkImageData> image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(14, 5.0));
-    labelmesher::io::MaterialTable table;
-    labelmesher::io::MaterialInfo shell;
+    labelmesher::MaterialTable table;
+    labelmesher::MaterialInfo shell;
     shell.Label = 1;
     shell.Name = "outer shell";
     shell.Color = { 0.8, 0.3, 0.1 };
     table.Set(shell);
-    labelmesher::io::StoreMaterialTable(image->GetFieldData(), table);
+    labelmesher::StoreMaterialTable(image->GetFieldData(), table);
     Mesher = vtkLabelMesher::New();
     Mesher->SetInputData(image);
     Mesher->Update();
@@ -92,24 +92,24 @@ vtkLabelMesher* WriterTest::Mesher = nullptr;
 
 TEST(MaterialTable, FieldDataRoundTrip)
 {
-  labelmesher::io::MaterialTable table;
-  labelmesher::io::MaterialInfo a;
+  labelmesher::MaterialTable table;
+  labelmesher::MaterialInfo a;
   a.Label = 7;
   a.Name = "bone";
   a.Color = { 1, 0.5, 0 };
-  labelmesher::io::MaterialInfo b;
+  labelmesher::MaterialInfo b;
   b.Label = 2; // no name, no colour
   table.Set(a);
   table.Set(b);
   vtkNew<vtkFieldData> fd;
-  labelmesher::io::StoreMaterialTable(fd, table);
-  const labelmesher::io::MaterialTable back = labelmesher::io::ReadMaterialTable(fd);
+  labelmesher::StoreMaterialTable(fd, table);
+  const labelmesher::MaterialTable back = labelmesher::ReadMaterialTable(fd);
   ASSERT_EQ(back.Entries().size(), 2u);
   EXPECT_EQ(back.NameOf(7), "bone");
   EXPECT_EQ(back.NameOf(2), "label_2");
   EXPECT_FALSE(back.Find(2)->HasColor());
   EXPECT_DOUBLE_EQ(back.Find(7)->Color[1], 0.5);
-  EXPECT_TRUE(labelmesher::io::ReadMaterialTable(nullptr).Empty());
+  EXPECT_TRUE(labelmesher::ReadMaterialTable(nullptr).Empty());
 }
 
 TEST_F(WriterTest, NamesReachEveryFiniteElementFormat)
@@ -129,7 +129,7 @@ TEST_F(WriterTest, NamesReachEveryFiniteElementFormat)
   reader->Update();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), Mesher->GetOutput()->GetNumberOfCells());
   EXPECT_GT(reader->GetOutput()->GetNumberOfCells(), 0);
-  const labelmesher::io::MaterialTable table = labelmesher::io::ReadMaterialTable(reader->GetOutput()->GetFieldData());
+  const labelmesher::MaterialTable table = labelmesher::ReadMaterialTable(reader->GetOutput()->GetFieldData());
   EXPECT_EQ(table.NameOf(1), "outer shell");
   EXPECT_DOUBLE_EQ(table.Find(1)->Color[0], 0.8);
 }
@@ -139,21 +139,21 @@ TEST_F(WriterTest, EveryFilterPassesTheMaterialTable)
   // The image's table through the mesher and the decimator (3D), and through the curver (2D);
   // the decimator takes the mesh's table over the image's.
   vtkSmartPointer<vtkImageData> image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(12, 4.0));
-  labelmesher::io::MaterialTable table;
-  labelmesher::io::MaterialInfo ball;
+  labelmesher::MaterialTable table;
+  labelmesher::MaterialInfo ball;
   ball.Label = 1;
   ball.Name = "ball";
   table.Set(ball);
-  labelmesher::io::StoreMaterialTable(image->GetFieldData(), table);
+  labelmesher::StoreMaterialTable(image->GetFieldData(), table);
   vtkNew<vtkLabelOctreeMesher> mesher;
   mesher->SetInputData(image);
   mesher->IncludeBackgroundOn();
   vtkSmartPointer<vtkImageData> other = vtkSmartPointer<vtkImageData>::New();
   other->DeepCopy(image);
   ball.Name = "not this one";
-  labelmesher::io::MaterialTable otherTable;
+  labelmesher::MaterialTable otherTable;
   otherTable.Set(ball);
-  labelmesher::io::StoreMaterialTable(other->GetFieldData(), otherTable);
+  labelmesher::StoreMaterialTable(other->GetFieldData(), otherTable);
   vtkNew<vtkMeshDecimator> decimator;
   decimator->SetInputConnection(0, mesher->GetOutputPort(0));
   decimator->SetInputDataObject(1, other);
@@ -161,16 +161,16 @@ TEST_F(WriterTest, EveryFilterPassesTheMaterialTable)
   for (vtkDataObject* out : { mesher->GetOutputDataObject(0), mesher->GetOutputDataObject(1),
          decimator->GetOutputDataObject(0), decimator->GetOutputDataObject(1) })
   {
-    EXPECT_EQ(labelmesher::io::ReadMaterialTable(out->GetFieldData()).NameOf(1), "ball");
+    EXPECT_EQ(labelmesher::ReadMaterialTable(out->GetFieldData()).NameOf(1), "ball");
   }
   vtkSmartPointer<vtkImageData> slice = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeDiscSliceXZ(12, 4.0));
-  labelmesher::io::StoreMaterialTable(slice->GetFieldData(), table);
+  labelmesher::StoreMaterialTable(slice->GetFieldData(), table);
   vtkNew<vtkLabelOctreeMesher> mesher2D;
   mesher2D->SetInputData(slice);
   vtkNew<vtkBezierCurver> curver;
   curver->SetInputConnection(mesher2D->GetOutputPort(0));
   curver->Update();
-  EXPECT_EQ(labelmesher::io::ReadMaterialTable(curver->GetOutput()->GetFieldData()).NameOf(1), "ball");
+  EXPECT_EQ(labelmesher::ReadMaterialTable(curver->GetOutput()->GetFieldData()).NameOf(1), "ball");
   // Nothing to pass: no table appears.
   vtkNew<vtkLabelOctreeMesher> plain;
   plain->SetInputData(labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(8, 2.5)));

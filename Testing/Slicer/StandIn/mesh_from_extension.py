@@ -20,7 +20,7 @@ if getattr(labelmesher, "__file__", None) is None:
     fail(f"labelmesher is a namespace package without __init__.py ({list(labelmesher.__path__)})")
 if not os.path.realpath(labelmesher.__file__).startswith(folder + os.sep):
     fail(f"labelmesher came from {labelmesher.__file__}, not {folder}")
-for name in ("vtkLabelMesher", "vtkLabelOctreeMesher", "vtkMeshDecimator", "vtkBezierCurver"):
+for name in ("vtkLabelMesher", "vtkLabelMeshReport", "vtkLabelOctreeMesher", "vtkMeshDecimator", "vtkBezierCurver"):
     if not hasattr(labelmesher, name):
         fail(f"labelmesher has no {name}")
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_Report_h
-#define labelmesher_cli_Report_h
+#ifndef labelmesher_report_RunReport_h
+#define labelmesher_report_RunReport_h
 
 /**
- * @file Report.h
- * What a run produced, gathered from vtkLabelOctreeMesher's output (cell data and
- * field data) and printed as a text summary or written as JSON.
+ * @file RunReport.h
+ * What a run of vtkLabelMesher produced, gathered from its mesh (cell data and
+ * field data: the parameters, the measurements, the material table, the
+ * timings) and printed as a text summary or written as JSON: the one report of
+ * the CLI (`--report`, its summary), the desktop viewer and, through
+ * vtkLabelMeshReport, the 3D Slicer module and Python.
  */
 
 #include "MaterialTable.h"
@@ -25,10 +28,11 @@ class vtkFieldData;
 class vtkImageData;
 class vtkUnstructuredGrid;
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 
-struct MeshingSettings;
 class JsonWriter;
 
 struct TopologyEntry
@@ -54,7 +58,7 @@ struct RunReport
 {
   std::string Input;
   std::vector<std::string> Outputs; ///< every file written, in the order of -o
-  labelmesher::io::MaterialTable Materials; ///< names and colours (names default to label_N)
+  MaterialTable Materials; ///< names and colours (names default to label_N)
   std::vector<std::string> Notes;   ///< remarks of the reader (e.g. renumbered segments)
   std::array<int, 3> Dimensions{ 0, 0, 0 };
   std::array<double, 3> Spacing{ 0, 0, 0 };
@@ -93,12 +97,17 @@ long long FieldCount(vtkFieldData* fd, const char* name, vtkIdType tuple = 0);
 /// `value` with `digits` decimals.
 std::string FormatFixed(double value, int digits);
 
-/// Collects the figures of a finished run: `mesh` is what was written (the
-/// decimator's output, or the mesher's with --no-decimate), `initial` the
-/// mesher's output (its stage timings come first).
-/// The report of a run of `settings` on `image` read from `input`; Outputs is left to the caller.
-RunReport MakeReport(const std::string& input, const MeshingSettings& settings, vtkImageData* image,
-  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial);
+/// The report of the run that made `mesh` (vtkLabelMesher's output port 0: decimated, or the
+/// mesher's without decimation) from `image` read from `input`: the parameters, measurements,
+/// material table and timings its field data records. Outputs, Notes and the memory figures are
+/// the caller's to add.
+RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructuredGrid* mesh);
+/// The angle bound the mesh keeps, degrees: the decimation's, or without it the initial mesh's
+/// proven bound.
+double AngleBoundOf(const RunReport& report);
+/// True when the mesh was measured and keeps every guarantee as measured: no angle below
+/// AngleBoundOf, no inverted cell, both distance bounds certified, every material's topology.
+bool GuaranteesHold(const RunReport& report);
 void PrintSummary(const RunReport& report, std::ostream& out);
 /// "a.vtu, b.msh"
 std::string OutputList(const RunReport& report);
@@ -108,6 +117,7 @@ void WriteJson(const RunReport& report, std::ostream& out);
 /// The report's "decimation" value: an object, or null with --no-decimate.
 void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& json);
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher
 
 #endif

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_io_VTKMessages_h
-#define labelmesher_io_VTKMessages_h
+#ifndef labelmesher_VTKMessages_h
+#define labelmesher_VTKMessages_h
 
 /**
  * @file VTKMessages.h
@@ -18,8 +18,6 @@
 class vtkObject;
 
 namespace labelmesher
-{
-namespace io
 {
 
 class VTKMessages
@@ -48,7 +46,6 @@ private:
 /// caught by VTKMessages and reported as one line.
 void SilenceVTKOutputWindow();
 
-} // namespace io
 } // namespace labelmesher
 
 #endif

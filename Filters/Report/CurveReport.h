@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_CurveReport_h
-#define labelmesher_cli_CurveReport_h
+#ifndef labelmesher_report_CurveReport_h
+#define labelmesher_report_CurveReport_h
 
 /**
  * @file CurveReport.h
- * What `labelmesher curve` produced, gathered from vtkBezierCurver's output
+ * What a curving run (`labelmesher curve`) produced, gathered from vtkBezierCurver's output
  * (cell data and field data) next to the linear mesh's report, printed as a
  * text summary or written as JSON.
  */
 
-#include "Report.h"
+#include "RunReport.h"
 
 #include <array>
 #include <map>
@@ -21,7 +21,9 @@
 
 class vtkUnstructuredGrid;
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 
 struct PixelCounts
@@ -60,10 +62,13 @@ struct CurveReport
   bool Valid() const { return this->InvalidCells == 0; }
 };
 
-CurveReport MakeCurveReport(const RunReport& linear, const MeshingSettings& settings, vtkUnstructuredGrid* curved);
+/// The report of `curved` (vtkLabelMesher's output port 2, vtkBezierCurver's output) beside that of
+/// the linear mesh it was curved from; the curver's parameters are those its field data records.
+CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved);
 void PrintCurveSummary(const CurveReport& report, std::ostream& out);
 void WriteCurveJson(const CurveReport& report, std::ostream& out);
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher
 
 #endif

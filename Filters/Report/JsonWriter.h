@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_cli_JsonWriter_h
-#define labelmesher_cli_JsonWriter_h
+#ifndef labelmesher_report_JsonWriter_h
+#define labelmesher_report_JsonWriter_h
 
 /**
  * @file JsonWriter.h
@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 
 class JsonWriter
@@ -42,6 +44,7 @@ private:
   bool AfterKey = false;
 };
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher
 
 #endif

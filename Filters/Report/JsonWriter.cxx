@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 
 JsonWriter::JsonWriter(std::ostream& out)
@@ -149,4 +151,5 @@ JsonWriter& JsonWriter::Null()
   return *this;
 }
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher

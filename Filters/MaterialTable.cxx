@@ -18,8 +18,6 @@
 
 namespace labelmesher
 {
-namespace io
-{
 
 void MaterialTable::Set(const MaterialInfo& info)
 {
@@ -116,5 +114,4 @@ MaterialTable ReadMaterialTable(vtkFieldData* fd)
   return table;
 }
 
-} // namespace io
 } // namespace labelmesher

@@ -12,8 +12,6 @@
 
 namespace labelmesher
 {
-namespace io
-{
 
 VTKMessages::VTKMessages(vtkObject* object, unsigned long event)
 {
@@ -64,5 +62,4 @@ void SilenceVTKOutputWindow()
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
-} // namespace io
 } // namespace labelmesher

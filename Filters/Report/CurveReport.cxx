@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Gathers what `labelmesher curve` produced from vtkBezierCurver's output and prints it or writes it
+// Gathers what a curving run (`labelmesher curve`) produced from vtkBezierCurver's output and prints it or writes it
 // as JSON.
 #include "CurveReport.h"
 
-#include "MeshingPipeline.h"
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
@@ -19,7 +18,9 @@
 #include <cstdio>
 #include <iomanip>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 namespace arrays = labelmesher::arrays;
 namespace
@@ -53,18 +54,18 @@ bool CurveReport::CurvesFaithful() const
     *this->InterfaceCrossings == 0 && this->TopologyMatches && *this->TopologyMatches;
 }
 
-CurveReport MakeCurveReport(const RunReport& linear, const MeshingSettings& settings, vtkUnstructuredGrid* curved)
+CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved)
 {
   CurveReport r;
   r.Linear = linear;
-  r.Smoothness = settings.Smoothness;
-  r.Tension = settings.Tension;
-  r.MaximumUntanglingSteps = settings.MaximumUntanglingSteps;
-  r.MaximumShorteningRounds = settings.MaximumShorteningRounds;
-  r.QualityIterations = settings.QualityIterations;
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
   vtkFieldData* fd = curved->GetFieldData();
+  r.Smoothness = static_cast<int>(FieldCount(fd, arrays::Smoothness));
+  r.Tension = FieldValue(fd, arrays::Tension).value_or(0.0);
+  r.MaximumUntanglingSteps = static_cast<int>(FieldCount(fd, arrays::MaximumUntanglingSteps));
+  r.MaximumShorteningRounds = static_cast<int>(FieldCount(fd, arrays::MaximumShorteningRounds));
+  r.QualityIterations = static_cast<int>(FieldCount(fd, arrays::QualityIterations));
   r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
   r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
   r.UntanglingSteps = FieldCount(fd, arrays::UntanglingSteps);
@@ -327,4 +328,5 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.EndObject();
 }
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher

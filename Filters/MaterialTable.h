@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#ifndef labelmesher_io_MaterialTable_h
-#define labelmesher_io_MaterialTable_h
+#ifndef labelmesher_MaterialTable_h
+#define labelmesher_MaterialTable_h
 
 /**
  * @file MaterialTable.h
@@ -22,8 +22,6 @@
 class vtkFieldData;
 
 namespace labelmesher
-{
-namespace io
 {
 
 struct MaterialInfo
@@ -58,7 +56,6 @@ void StoreMaterialTable(vtkFieldData* fd, const MaterialTable& table);
 /// length are left out.
 MaterialTable ReadMaterialTable(vtkFieldData* fd);
 
-} // namespace io
 } // namespace labelmesher
 
 #endif

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Gathers what `labelmesher mesh` produced from the filters' field data and prints it or writes it as
-// JSON.
-#include "Report.h"
+// Gathers what a run produced from the filters' field data and prints it or writes it as JSON.
+#include "RunReport.h"
 
-#include "MeshingPipeline.h"
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
@@ -21,7 +19,9 @@
 #include <cstdio>
 #include <iomanip>
 
-namespace labelmesher_cli
+namespace labelmesher
+{
+namespace report
 {
 namespace arrays = labelmesher::arrays;
 
@@ -77,16 +77,12 @@ void AppendTimings(vtkFieldData* fd, std::vector<std::pair<std::string, double>>
 
 } // namespace
 
-RunReport MakeReport(const std::string& input, const MeshingSettings& settings, vtkImageData* image,
-  vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* initial)
+RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructuredGrid* mesh)
 {
   RunReport r;
   r.Input = input;
   image->GetDimensions(r.Dimensions.data());
   image->GetSpacing(r.Spacing.data());
-  r.IncludeBackground = settings.IncludeBackground;
-  r.ImageToMeshBound = settings.ImageToMeshDistance;
-  r.MeshToImageBound = settings.MeshToImageDistance;
   r.MeshDimension = (r.Dimensions[0] == 1 || r.Dimensions[1] == 1 || r.Dimensions[2] == 1) ? 2 : 3;
 
   r.Points = mesh->GetNumberOfPoints();
@@ -100,6 +96,10 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
   }
 
   vtkFieldData* fd = mesh->GetFieldData();
+  r.Materials = ReadMaterialTable(fd);
+  r.IncludeBackground = FieldCount(fd, arrays::IncludeBackground) != 0;
+  r.ImageToMeshBound = FieldValue(fd, arrays::ImageToMeshDistance).value_or(0.0);
+  r.MeshToImageBound = FieldValue(fd, arrays::MeshToImageDistance).value_or(0.0);
   r.VoxelSize = FieldValue(fd, arrays::VoxelSize).value_or(1.0);
   r.MinimumAngle = FieldValue(fd, arrays::MinimumAngle);
   r.MaximumAngle = FieldValue(fd, arrays::MaximumAngle);
@@ -124,13 +124,8 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
       r.Topology.push_back(e);
     }
   }
-  vtkFieldData* meshed = initial ? initial->GetFieldData() : fd;
-  r.EstimatedMemory = FieldValue(meshed, arrays::EstimatedMemory);
-  r.InterfaceFaces = FieldCount(meshed, arrays::InterfaceFaces);
-  if (initial && initial != mesh)
-  {
-    AppendTimings(initial->GetFieldData(), r.Timings);
-  }
+  r.EstimatedMemory = FieldValue(fd, arrays::EstimatedMemory);
+  r.InterfaceFaces = FieldCount(fd, arrays::InterfaceFaces);
   AppendTimings(fd, r.Timings);
   if (fd->GetArray(arrays::Merges))
   {
@@ -153,6 +148,19 @@ RunReport MakeReport(const std::string& input, const MeshingSettings& settings, 
   return r;
 }
 
+double AngleBoundOf(const RunReport& r)
+{
+  return r.Decimation ? r.Decimation->AngleBound : vtkLabelOctreeMesher::GetProvenAngleBound(r.MeshDimension);
+}
+
+bool GuaranteesHold(const RunReport& r)
+{
+  // The measured angle is computed in floating point from the written coordinates; the bound is
+  // an exact predicate's, so the comparison allows rounding only.
+  return r.Measured() && *r.MinimumAngle >= AngleBoundOf(r) - 1e-9 && r.InvertedCells.value_or(1.0) == 0.0 &&
+    r.HausdorffCertified.value_or(0.0) == 1.0 && r.TopologyMatches();
+}
+
 std::string OutputList(const RunReport& r)
 {
   std::string list;
@@ -168,7 +176,7 @@ void WriteMaterialTableJson(const RunReport& r, JsonWriter& j)
   j.Key("material_table").BeginArray();
   for (const auto& entry : r.CellsPerMaterial)
   {
-    const labelmesher::io::MaterialInfo* info = r.Materials.Find(entry.first);
+    const MaterialInfo* info = r.Materials.Find(entry.first);
     j.BeginObject();
     j.Key("label").Integer(entry.first);
     j.Key("name").String(r.Materials.NameOf(entry.first));
@@ -370,7 +378,7 @@ void WriteJson(const RunReport& r, std::ostream& out)
   j.Key("quality").BeginObject();
   j.Key("angle_kind").String(r.MeshDimension == 3 ? "dihedral" : "planar");
   j.Key("angle_bound_degrees")
-    .Number(r.Decimation ? r.Decimation->AngleBound : vtkLabelOctreeMesher::GetProvenAngleBound(r.MeshDimension));
+    .Number(AngleBoundOf(r));
   j.Key("minimum_angle_degrees");
   optional(r.MinimumAngle);
   j.Key("maximum_angle_degrees");
@@ -457,4 +465,5 @@ void WriteJson(const RunReport& r, std::ostream& out)
   j.EndObject();
 }
 
-} // namespace labelmesher_cli
+} // namespace report
+} // namespace labelmesher

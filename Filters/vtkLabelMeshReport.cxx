@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -97,12 +98,12 @@ vtkLabelMeshReport::Figures vtkLabelMeshReport::Gather()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkLabelMeshReport::GetMeshJSON()
+std::string vtkLabelMeshReport::Text(const std::function<void(const Figures&, std::ostream&)>& write)
 {
   try
   {
     std::ostringstream out;
-    labelmesher::report::WriteJson(this->Gather().Linear, out);
+    write(this->Gather(), out);
     return out.str();
   }
   catch (const std::exception& e)
@@ -112,23 +113,19 @@ std::string vtkLabelMeshReport::GetMeshJSON()
   }
 }
 
+std::string vtkLabelMeshReport::GetMeshJSON()
+{
+  return this->Text([](const Figures& f, std::ostream& out) { labelmesher::report::WriteJson(f.Linear, out); });
+}
+
 std::string vtkLabelMeshReport::GetCurveJSON()
 {
-  try
-  {
-    const Figures f = this->Gather();
-    std::ostringstream out;
+  return this->Text([](const Figures& f, std::ostream& out) {
     if (f.Curved)
     {
       labelmesher::report::WriteCurveJson(*f.Curved, out);
     }
-    return out.str();
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "No report: " << e.what() << ".");
-    return {};
-  }
+  });
 }
 
 std::string vtkLabelMeshReport::GetJSON()
@@ -139,10 +136,7 @@ std::string vtkLabelMeshReport::GetJSON()
 
 std::string vtkLabelMeshReport::GetSummary()
 {
-  try
-  {
-    const Figures f = this->Gather();
-    std::ostringstream out;
+  return this->Text([](const Figures& f, std::ostream& out) {
     if (f.Curved)
     {
       labelmesher::report::PrintCurveSummary(*f.Curved, out);
@@ -151,13 +145,7 @@ std::string vtkLabelMeshReport::GetSummary()
     {
       labelmesher::report::PrintSummary(f.Linear, out);
     }
-    return out.str();
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "No report: " << e.what() << ".");
-    return {};
-  }
+  });
 }
 
 //------------------------------------------------------------------------------

@@ -37,7 +37,9 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For the inputs held
 
-#include <string> // For the texts
+#include <functional> // For the report's writers
+#include <ostream>    // For the report's writers
+#include <string>     // For the texts
 #include <utility> // For the timings
 #include <vector>  // For the file names and notes
 
@@ -133,6 +135,8 @@ private:
   struct Figures;
   /// The reports of the meshes set; throws std::invalid_argument without an image or a mesh.
   Figures Gather();
+  /// What `write` makes of the reports; empty, after one error, when there are none.
+  std::string Text(const std::function<void(const Figures&, std::ostream&)>& write);
 
   vtkSmartPointer<vtkImageData> Image;
   vtkSmartPointer<vtkUnstructuredGrid> Mesh;

@@ -9,7 +9,6 @@
 
 #include "FilterTestSupport.h"
 #include "LabelMesherArrayNames.h"
-#include "MaterialTable.h"
 #include "vtkLabelMesher.h"
 
 #include "vtkDataArray.h"
@@ -38,13 +37,7 @@ bool Contains(const std::string& text, const std::string& part)
 vtkSmartPointer<vtkImageData> NamedBall()
 {
   auto image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(14, 4.5), { 0.5, 0.5, 0.5 });
-  labelmesher::MaterialTable table;
-  labelmesher::MaterialInfo liver;
-  liver.Label = 1;
-  liver.Name = "liver";
-  liver.Color = { 0.8, 0.3, 0.2 };
-  table.Set(liver);
-  labelmesher::StoreMaterialTable(image->GetFieldData(), table);
+  labelmesher::testing::NameMaterial(image, 1, "liver", { 0.8, 0.3, 0.2 });
   return image;
 }
 

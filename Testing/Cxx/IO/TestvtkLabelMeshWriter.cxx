@@ -53,13 +53,7 @@ protected:
   static void SetUpTestSuite()
   {
     vtkSmartPointer<vtkImageData> image = labelmesher::testing::MakeVtkImage(labelmesher::testing::MakeBallLabels(14, 5.0));
-    labelmesher::MaterialTable table;
-    labelmesher::MaterialInfo shell;
-    shell.Label = 1;
-    shell.Name = "outer shell";
-    shell.Color = { 0.8, 0.3, 0.1 };
-    table.Set(shell);
-    labelmesher::StoreMaterialTable(image->GetFieldData(), table);
+    labelmesher::testing::NameMaterial(image, 1, "outer shell", { 0.8, 0.3, 0.1 });
     Mesher = vtkLabelMesher::New();
     Mesher->SetInputData(image);
     Mesher->Update();

@@ -12,6 +12,8 @@
  * library does not link VTK.
  */
 
+#include "MaterialTable.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -93,6 +95,19 @@ inline vtkSmartPointer<vtkImageData> MakeVtkImage(const std::vector<int>& labels
   image->SetOrigin(origin.data());
   SetLabels(image, labels);
   return image;
+}
+
+/// Names label `label` of `image` with `name` and colour `rgb` in the image's material table
+/// (field data, as vtkLabelImageReader gives it), which the filters pass to their outputs.
+inline void NameMaterial(vtkImageData* image, int label, const std::string& name, std::array<double, 3> rgb)
+{
+  labelmesher::MaterialTable table = labelmesher::ReadMaterialTable(image->GetFieldData());
+  labelmesher::MaterialInfo info;
+  info.Label = label;
+  info.Name = name;
+  info.Color = rgb;
+  table.Set(info);
+  labelmesher::StoreMaterialTable(image->GetFieldData(), table);
 }
 
 /// The same with an explicit single-slice size (x by y), for 2D cases in the x-y plane.

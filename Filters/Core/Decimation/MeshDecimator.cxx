@@ -73,6 +73,11 @@ struct Shared
   const RegionScheduler& Regions;
   std::vector<std::uint32_t> Stamps;
   std::vector<std::int64_t> Key; ///< per vertex: a lower bound of its shortest edge (squared)
+  /// Per vertex, during the relocation rounds: 1 once InteriorRelocation::TryMove found no better
+  /// place for it, back to 0 when its star changes (a neighbour moves, a merge edits its cells).
+  /// TryMove depends on the star alone, so a settled vertex would be refused again: skipping it
+  /// gives the same moves and the same mesh. Empty outside the rounds.
+  std::vector<std::uint8_t> Settled;
   std::atomic<std::size_t> Offered{ 0 };
   std::atomic<std::size_t> Merges{ 0 }; ///< for MaximumMerges
   std::atomic<bool> Abort{ false };
@@ -260,6 +265,13 @@ void OfferVertices(Shared& s, Worker& w, MergeQueue& queue, std::int32_t region,
           s.Key[x] = std::min(s.Key[x], SquaredLength(mesh, x, b));
           queue.Push(x, s.Key[x]);
         }
+      // Every star the merge changed is b's or a neighbour's of b (all in this run: InRegion).
+      if (!s.Settled.empty())
+      {
+        s.Settled[b] = 0;
+        for (VertexId x : w.Neighbours)
+          s.Settled[x] = 0;
+      }
       s.Key[b] = ShortestEdge(mesh, b);
       queue.Push(b, s.Key[b]);
       merged = true;
@@ -440,6 +452,7 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
   {
     InteriorRelocation relocation;
     Worker scratch(shared, boundary);
+    shared.Settled.assign(mesh.Position.size(), 0);
     for (int round = 0; round < kRelocationRounds; ++round)
     {
       const double from = 0.8 + 0.15 * round / kRelocationRounds;
@@ -448,8 +461,13 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
       std::size_t moved = 0;
       for (VertexId v : regions.AliveInMortonOrder())
       {
-        if (frozen[v] || !relocation.TryMove(mesh, v, parameters.Checks.Quality))
+        if (frozen[v] || shared.Settled[v])
           continue;
+        if (!relocation.TryMove(mesh, v, parameters.Checks.Quality))
+        {
+          shared.Settled[v] = 1;
+          continue;
+        }
         ++moved;
         touched[v] = 1;
         shared.Key[v] = ShortestEdge(mesh, v);
@@ -457,6 +475,7 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
         for (VertexId x : scratch.Neighbours)
         {
           touched[x] = 1;
+          shared.Settled[x] = 0;
           shared.Key[x] = ShortestEdge(mesh, x);
         }
       }

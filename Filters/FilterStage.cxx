@@ -39,8 +39,9 @@ StageMessages RunAsStage(vtkAlgorithm* outer, vtkAlgorithm* inner, double start,
       running->SetAbortExecute(1);
     }
   });
+  // VTK clears the inner filter's AbortExecute when it starts: a stop reaches it through its first
+  // progress report.
   const unsigned long tag = inner->AddObserver(vtkCommand::ProgressEvent, forward);
-  inner->SetAbortExecute(outer->GetAbortExecute());
   inner->Update();
   inner->RemoveObserver(tag);
   return { errors.First(), warnings.First() };

@@ -50,13 +50,15 @@ namespace
 /// meshing and decimating); each stage's progress fills its share of the whole run's.
 constexpr double kMeshWeight = 0.3, kMeshAndDecimateWeight = 1.0, kCurveWeight = 0.3;
 
-bool IsTwoDimensional(vtkImageData* image)
+} // namespace
+
+//------------------------------------------------------------------------------
+int vtkLabelMesher::GetImageDimension(vtkImageData* image)
 {
   int dims[3];
   image->GetDimensions(dims);
-  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
+  return (dims[0] == 1 || dims[1] == 1 || dims[2] == 1) ? 2 : 3;
 }
-} // namespace
 
 //------------------------------------------------------------------------------
 double vtkLabelMesher::GetProvenAngleBound(int dimension)
@@ -156,7 +158,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkErrorMacro("Missing input image or outputs.");
     return 0;
   }
-  if (this->Curve && !IsTwoDimensional(input))
+  if (this->Curve && GetImageDimension(input) != 2)
   {
     vtkErrorMacro("Curving needs a 2D image (one extent of a single slice); this image is 3D.");
     return 1;
@@ -169,7 +171,8 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     : this->MeshOnly(input, output, interfaces, meshShare);
   if (meshed && this->Curve && !this->CurveMesh(input, output, curved, meshShare))
   {
-    // Stopped while curving: the run is not done, and a linear mesh is not what was asked for.
+    // Stopped or failed while curving: the run is not done, and a linear mesh alone is not what
+    // was asked for.
     output->Initialize();
     interfaces->Initialize();
   }
@@ -230,26 +233,30 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
   image->ShallowCopy(input);
   curver->SetInputDataObject(0, mesh);
   curver->SetInputDataObject(1, image);
+  // The labels the mesh was made from, not the image's active scalars: the same array, on the
+  // curver's image port.
+  vtkNew<vtkInformation> labels;
+  labels->Copy(this->GetInputArrayInformation(0));
+  labels->Set(vtkAlgorithm::INPUT_PORT(), 1);
+  curver->SetInputArrayToProcess(0, labels);
   const labelmesher::StageMessages messages = labelmesher::RunAsStage(this, curver, start, 1.0 - start);
   if (!messages.Warning.empty())
   {
     vtkWarningMacro(<< messages.Warning);
   }
-  if (this->GetAbortExecute() && curver->GetOutput()->GetNumberOfCells() == 0)
-  {
-    return false;
-  }
-  // An untangling failure still outputs the marked mesh: kept, with the error.
-  curved->ShallowCopy(curver->GetOutput());
+  vtkUnstructuredGrid* made = curver->GetOutput();
   if (!messages.Error.empty())
   {
     vtkErrorMacro(<< messages.Error);
   }
-  else if (curved->GetNumberOfCells() == 0)
+  else if (made->GetNumberOfCells() == 0 && !this->GetAbortExecute())
   {
     vtkErrorMacro("The curver produced no cells.");
   }
-  return true;
+  // An untangling failure still outputs the marked mesh: kept, with the error and the linear mesh.
+  // Any other failure (or a stop) leaves no curves: the run did not finish.
+  curved->ShallowCopy(made);
+  return made->GetNumberOfCells() > 0;
 }
 
 //------------------------------------------------------------------------------

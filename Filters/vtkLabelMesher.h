@@ -5,8 +5,8 @@
  *          decimate the mesh block by block, and (2D, on request) curve it
  *
  * vtkLabelMesher is what every front end runs (the labelmesher CLI, the
- * desktop viewer, the 3D Slicer module, ParaView's "Label Mesher (all
- * stages)"): they set its parameters and show its outputs, nothing more.
+ * desktop viewer, the 3D Slicer module, ParaView's "Label Mesher", the entry
+ * of all stages): they set its parameters and show its outputs, nothing more.
  *
  * Decimate on (default): the mesh of vtkLabelOctreeMesher (IncludeBackground
  * on) followed by vtkMeshDecimator, with the same guarantees (angle bound, both
@@ -53,14 +53,16 @@
  *
  * Progress is reported through UpdateProgress, over the whole run (the stages'
  * shares are their rough weights on real images); AbortExecute stops the run
- * in whichever stage it is (the outputs are then empty, and a warning says so).
+ * in whichever stage it is, at that stage's next progress report (the outputs
+ * are then empty, and a warning says so). Measuring cannot stop: a request
+ * while the mesh or the curves are being measured leaves the complete outputs.
  *
  * @warning Errors (one message) for an image that is not a label image (as
  * vtkLabelOctreeMesher), a MinimumAngle outside (0, GetProvenAngleBound], a
- * run estimated not to fit in memory, and Curve on a 3D image: the outputs are
- * then empty. A curving whose untangling fails is an error too, but port 2
- * then holds the curver's marked mesh (cell data Valid), to inspect; ports 0
- * and 1 hold the linear mesh.
+ * run estimated not to fit in memory, Curve on a 3D image, and a curving that
+ * fails: the outputs are then empty. A curving whose untangling fails is an
+ * error too, but port 2 then holds the curver's marked mesh (cell data Valid),
+ * to inspect, and ports 0 and 1 the linear mesh.
  *
  * @sa
  * vtkLabelOctreeMesher vtkMeshDecimator vtkBezierCurver vtkLabelMeshReport
@@ -109,6 +111,12 @@ public:
    * fill can emit): the largest MinimumAngle a decimation may ask for.
    */
   static double GetProvenAngleBound(int dimension);
+
+  /**
+   * 2 when one of the image's extents is a single slice (a 2D image: triangles,
+   * curving possible), else 3.
+   */
+  static int GetImageDimension(vtkImageData* image);
 
   ///@{
   /**

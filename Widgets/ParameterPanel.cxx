@@ -388,22 +388,5 @@ double ParameterPanel::maximumAngle() const
   return vtkLabelMesher::GetProvenAngleBound(this->Dimension);
 }
 
-void ParameterPanel::applyTo(vtkLabelMesher* pipeline) const
-{
-  if (!pipeline)
-  {
-    return;
-  }
-  pipeline->SetImageToMeshDistance(this->ImageToMesh);
-  pipeline->SetMeshToImageDistance(this->MeshToImage);
-  pipeline->SetDecimate(this->decimate());
-  pipeline->SetMinimumAngle(this->minimumAngle());
-  pipeline->SetBlockCells(this->blockCells());
-  pipeline->SetMemoryLimit(this->memoryLimit());
-  pipeline->SetCurve(this->curve());
-  pipeline->SetSmoothness(this->smoothness());
-  pipeline->SetTension(this->tension());
-}
-
 } // namespace widgets
 } // namespace labelmesher

@@ -20,7 +20,6 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
-class vtkLabelMesher;
 
 namespace labelmesher
 {
@@ -77,10 +76,6 @@ public:
   /// The largest angle bound allowed for the image dimension (degrees).
   double maximumAngle() const;
 
-  /// Sets the pipeline's parameters (nothing when `pipeline` is null). The values are always valid
-  /// for it: the setters refuse non-finite and out-of-range values, the angle is clamped to
-  /// [1, maximumAngle()] whenever the image geometry changes.
-  void applyTo(vtkLabelMesher* pipeline) const;
 
 public slots:
   void setImageToMeshDistance(double voxels);

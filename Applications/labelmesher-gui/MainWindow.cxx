@@ -154,6 +154,11 @@ bool MainWindow::openImage(const QString& path)
   }
   this->Image = input.Image;
   this->Materials = input.Materials;
+  if (!this->Materials.Empty())
+  {
+    // As vtkLabelImageReader puts it: the filter passes it to the mesh, where the report finds it.
+    labelmesher::StoreMaterialTable(this->Image->GetFieldData(), this->Materials);
+  }
   this->Notes.clear();
   for (const std::string& note : input.Notes)
   {
@@ -261,7 +266,6 @@ void MainWindow::onFinished()
   const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
   labelmesher::report::RunReport report = labelmesher::report::MakeReport(this->ImagePath.toStdString(), this->Image, out.Mesh);
   report.Outputs = { "(not saved)" };
-  report.Materials = this->Materials;
   for (const QString& note : this->Notes)
   {
     report.Notes.push_back(note.toStdString());

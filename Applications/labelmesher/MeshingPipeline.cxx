@@ -22,9 +22,7 @@ vtkSmartPointer<T> CopyOf(T* data)
 
 bool IsTwoDimensional(vtkImageData* image)
 {
-  int dims[3];
-  image->GetDimensions(dims);
-  return dims[0] == 1 || dims[1] == 1 || dims[2] == 1;
+  return vtkLabelMesher::GetImageDimension(image) == 2;
 }
 
 MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress)
@@ -59,7 +57,7 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   {
     throw MeshingError(messages.Error);
   }
-  // A stop requested during a stage that cannot stop (measuring) leaves a complete output, kept.
+  // A stop requested while measuring (which cannot stop) leaves complete outputs, kept.
   if (mesher->GetAbortExecute() != 0 && mesh->GetNumberOfCells() == 0)
   {
     out.Aborted = true;

@@ -110,6 +110,12 @@ int Run(const Arguments& args)
       table.Set(m);
     }
   }
+  // On the image, as vtkLabelImageReader puts it: the filter passes it to the mesh, where the
+  // report finds the names.
+  if (!table.Empty())
+  {
+    labelmesher::StoreMaterialTable(image->GetFieldData(), table);
+  }
   const double readSeconds = Seconds(readStart);
   const bool curve = args.Settings.Curve;
   if (curve && !IsTwoDimensional(image))
@@ -143,7 +149,6 @@ int Run(const Arguments& args)
     : WriteOutputs(args, meshed.Mesh, meshed.Interfaces, table);
   RunReport report = MakeReport(args.Input, image, meshed.Mesh);
   report.Outputs = written;
-  report.Materials = table;
   report.Notes = input.Notes;
   report.StartMemory = startMemory;
   report.PeakMemory = labelmesher::PeakResidentBytes() / 1048576.0;

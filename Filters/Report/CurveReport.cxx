@@ -68,6 +68,7 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.QualityIterations = static_cast<int>(FieldCount(fd, arrays::QualityIterations));
   r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
   r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
+  r.ValidityMeasured = fd->GetArray(arrays::InvalidCells) != nullptr;
   r.UntanglingSteps = FieldCount(fd, arrays::UntanglingSteps);
   r.InterfaceChains = FieldCount(fd, arrays::InterfaceChains);
   r.ClosedInterfaceChains = FieldCount(fd, arrays::ClosedInterfaceChains);

@@ -59,7 +59,8 @@ struct CurveReport
   std::map<int, std::pair<PixelCounts, PixelCounts>> AccuracyPerMaterial; ///< linear, curved
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
 
-  bool Valid() const { return this->InvalidCells == 0; }
+  bool ValidityMeasured = false; ///< the curver recorded InvalidCells
+  bool Valid() const { return this->ValidityMeasured && this->InvalidCells == 0; }
 };
 
 /// The report of `curved` (vtkLabelMesher's output port 2, vtkBezierCurver's output) beside that of

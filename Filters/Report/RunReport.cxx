@@ -5,7 +5,7 @@
 #include "JsonWriter.h"
 
 #include "LabelMesherArrayNames.h"
-#include "vtkLabelOctreeMesher.h"
+#include "vtkLabelMesher.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -83,7 +83,7 @@ RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructu
   r.Input = input;
   image->GetDimensions(r.Dimensions.data());
   image->GetSpacing(r.Spacing.data());
-  r.MeshDimension = (r.Dimensions[0] == 1 || r.Dimensions[1] == 1 || r.Dimensions[2] == 1) ? 2 : 3;
+  r.MeshDimension = vtkLabelMesher::GetImageDimension(image);
 
   r.Points = mesh->GetNumberOfPoints();
   r.Cells = mesh->GetNumberOfCells();
@@ -150,7 +150,7 @@ RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructu
 
 double AngleBoundOf(const RunReport& r)
 {
-  return r.Decimation ? r.Decimation->AngleBound : vtkLabelOctreeMesher::GetProvenAngleBound(r.MeshDimension);
+  return r.Decimation ? r.Decimation->AngleBound : vtkLabelMesher::GetProvenAngleBound(r.MeshDimension);
 }
 
 bool GuaranteesHold(const RunReport& r)

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -145,6 +146,10 @@ TEST(vtkLabelMeshReport, ACurvedMeshGivesTheCurveReport)
   Spoil(curved, arrays::InvalidCells, 0.0);
   Spoil(curved, arrays::InterfaceCrossings, 2.0);
   EXPECT_FALSE(report->GetGuaranteesHold()) << "crossing curves";
+  Spoil(curved, arrays::InterfaceCrossings, 0.0);
+  ASSERT_TRUE(report->GetGuaranteesHold());
+  curved->GetFieldData()->RemoveArray(arrays::InvalidCells);
+  EXPECT_FALSE(report->GetGuaranteesHold()) << "validity not recorded is not validity";
 }
 
 TEST(vtkLabelMeshReport, WithoutAMeshItSaysSoOnce)
@@ -155,4 +160,22 @@ TEST(vtkLabelMeshReport, WithoutAMeshItSaysSoOnce)
   EXPECT_FALSE(report->GetGuaranteesHold());
   ASSERT_EQ(errors.Messages.size(), 2u);
   EXPECT_TRUE(Contains(errors.Messages[0], "needs the image")) << errors.Messages[0];
+}
+
+TEST(vtkLabelMeshReport, WithoutDecimationTheBoundIsTheProvenOne)
+{
+  vtkSmartPointer<vtkImageData> image = NamedBall();
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->DecimateOff();
+  mesher->Update();
+  vtkNew<vtkLabelMeshReport> report;
+  report->SetImage(image);
+  report->SetMesh(mesher->GetOutput());
+  const std::string json = report->GetMeshJSON();
+  EXPECT_TRUE(Contains(json, "\"decimation\": null")) << json;
+  char bound[64];
+  std::snprintf(bound, sizeof(bound), "\"angle_bound_degrees\": %g", vtkLabelMesher::GetProvenAngleBound(3));
+  EXPECT_TRUE(Contains(json, bound)) << bound << "\n" << json;
+  EXPECT_TRUE(report->GetGuaranteesHold());
 }

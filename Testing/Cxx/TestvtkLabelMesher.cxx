@@ -24,6 +24,8 @@
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -357,4 +359,68 @@ TEST(vtkLabelMesher, MinimumAngleIsClampedToTheProvenBounds)
   EXPECT_EQ(mesher->GetMinimumAngle(), 0.0);
   EXPECT_STREQ(vtkLabelMesher::GetMaterialArrayName(), arrays::Material);
   EXPECT_STREQ(vtkLabelMesher::GetMaterialNameArrayName(), arrays::MaterialName);
+}
+
+TEST(vtkLabelMesher, CurveOffAgainEmptiesTheCurvedPort)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40));
+  mesher->CurveOn();
+  mesher->Update();
+  ASSERT_GT(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
+  mesher->CurveOff();
+  mesher->Update();
+  EXPECT_GT(mesher->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0) << "no curves left from the run before";
+}
+
+TEST(vtkLabelMesher, AnErrorBeforeCurvingEmptiesEveryPort)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40));
+  mesher->CurveOn();
+  mesher->SetMemoryLimit(1.0);
+  MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+  mesher->Update();
+  ASSERT_EQ(errors.Messages.size(), 1u);
+  EXPECT_NE(errors.Messages[0].find("memory limit"), std::string::npos) << errors.Messages[0];
+  EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetInterfacesOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(vtkLabelMesher, TheCurverFitsTheLabelsTheMeshWasMadeFrom)
+{
+  // The labels are a second point array; the active scalars are something else (all one label):
+  // the curver must read the array the filter was told to, as the mesher does.
+  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+  vtkNew<vtkIntArray> labels;
+  labels->DeepCopy(image->GetPointData()->GetScalars());
+  labels->SetName("Labels");
+  vtkNew<vtkIntArray> other;
+  other->SetName("Other");
+  other->SetNumberOfValues(labels->GetNumberOfTuples());
+  other->Fill(3);
+  image->GetPointData()->SetScalars(other); // replaces the labels as the scalars
+  image->GetPointData()->AddArray(labels);
+  vtkNew<vtkLabelMesher> composite;
+  composite->SetInputData(image);
+  composite->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  composite->CurveOn();
+  MessageRecorder errors(composite, vtkCommand::ErrorEvent);
+  composite->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
+
+  vtkNew<vtkLabelMesher> linear;
+  linear->SetInputData(image);
+  linear->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(0, linear->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  curver->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  curver->Update();
+  ASSERT_GT(composite->GetCurvedOutput()->GetNumberOfCells(), 0);
+  EXPECT_TRUE(SameGrid(composite->GetCurvedOutput(), curver->GetOutput()));
+  EXPECT_EQ(FieldScalar(composite->GetCurvedOutput(), arrays::MisclassifiedPixelsCurved),
+    FieldScalar(curver->GetOutput(), arrays::MisclassifiedPixelsCurved));
 }

@@ -4,7 +4,6 @@
 // values reaching the filters.
 #include "ParameterPanel.h"
 
-#include "vtkLabelMesher.h"
 #include "vtkNew.h"
 
 #include <QCheckBox>
@@ -182,32 +181,6 @@ private slots:
     QVERIFY(child<QDoubleSpinBox>(panel, "imageToMeshDistance")->toolTip().contains("voxels"));
     QVERIFY(child<QDoubleSpinBox>(panel, "minimumAngle")->toolTip().contains("degrees"));
     QVERIFY(child<QDoubleSpinBox>(panel, "tension")->toolTip().contains("[0, 1]"));
-  }
-
-  void valuesReachTheFilters()
-  {
-    ParameterPanel panel;
-    panel.setImageGeometry(2, 0.2);
-    panel.setImageToMeshDistance(1.5);
-    panel.setMeshToImageDistance(0.5);
-    panel.setMinimumAngle(33.0);
-    panel.setSmoothness(2);
-    panel.setTension(0.25);
-    panel.setCurve(true);
-    panel.setBlockCells(5000);
-    panel.setMemoryLimit(900.0);
-    vtkNew<vtkLabelMesher> pipeline;
-    panel.applyTo(pipeline);
-    QCOMPARE(pipeline->GetImageToMeshDistance(), 1.5);
-    QCOMPARE(pipeline->GetMeshToImageDistance(), 0.5);
-    QCOMPARE(pipeline->GetDecimate(), true);
-    QCOMPARE(pipeline->GetMinimumAngle(), 33.0);
-    QCOMPARE(pipeline->GetCurve(), true);
-    QCOMPARE(pipeline->GetSmoothness(), 2);
-    QCOMPARE(pipeline->GetTension(), 0.25);
-    QCOMPARE(pipeline->GetBlockCells(), vtkIdType(5000));
-    QCOMPARE(pipeline->GetMemoryLimit(), 900.0);
-    panel.applyTo(nullptr); // nothing to set
   }
 };
 

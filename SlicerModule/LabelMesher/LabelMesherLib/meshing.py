@@ -223,8 +223,7 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     parameters = parameters or MeshingParameters()
     placement = placement_from_ijk_to_ras(ijk_to_ras)
     image = label_image(labels_kji, placement.spacing, selected)
-    dims = image.GetDimensions()
-    parameters.validate(2 if 1 in dims else 3)
+    parameters.validate(_MESHER.GetImageDimension(image))
     known = {m.label: m for m in materials}
     present = sorted(int(v) for v in np.unique(vtk_to_numpy(image.GetPointData().GetScalars()))
                      if v or parameters.include_background)

@@ -16,10 +16,8 @@
 
 vtkStandardNewMacro(vtkLabelMeshReport);
 
-struct vtkLabelMeshReport::Figures
+struct vtkLabelMeshReport::Figures : labelmesher::report::RunReports
 {
-  labelmesher::report::RunReport Linear;
-  std::optional<labelmesher::report::CurveReport> Curved;
 };
 
 //------------------------------------------------------------------------------
@@ -77,24 +75,15 @@ vtkLabelMeshReport::Figures vtkLabelMeshReport::Gather()
   {
     throw std::invalid_argument("the report needs the image (SetImage) and the mesh (SetMesh)");
   }
-  Figures f;
-  f.Linear = labelmesher::report::MakeReport(this->InputName, this->Image, this->Mesh);
-  f.Linear.Outputs = this->OutputNames;
-  f.Linear.Notes = this->Notes;
-  f.Linear.StartMemory = this->StartMemory;
-  f.Linear.PeakMemory = this->PeakMemory;
-  auto& timings = f.Linear.Timings;
-  timings.insert(timings.begin(), this->FirstTimings.begin(), this->FirstTimings.end());
-  const bool curved = this->Curved && this->Curved->GetNumberOfCells() > 0;
-  if (!curved)
-  {
-    timings.insert(timings.end(), this->LastTimings.begin(), this->LastTimings.end());
-    return f;
-  }
-  // The curve report lists the caller's last stages (writing) after the curver's.
-  f.Curved = labelmesher::report::MakeCurveReport(f.Linear, this->Curved);
-  f.Curved->Timings.insert(f.Curved->Timings.end(), this->LastTimings.begin(), this->LastTimings.end());
-  return f;
+  labelmesher::report::RunContext context;
+  context.Input = this->InputName;
+  context.Outputs = this->OutputNames;
+  context.Notes = this->Notes;
+  context.TimingsBefore = this->FirstTimings;
+  context.TimingsAfter = this->LastTimings;
+  context.StartMemory = this->StartMemory;
+  context.PeakMemory = this->PeakMemory;
+  return { labelmesher::report::MakeRunReports(context, this->Image, this->Mesh, this->Curved) };
 }
 
 //------------------------------------------------------------------------------

@@ -264,18 +264,17 @@ void MainWindow::onProgress(double fraction, const QString& stage)
 void MainWindow::onFinished()
 {
   const labelmesher_cli::MeshingOutcome& out = this->Job.outcome();
-  labelmesher::report::RunReport report = labelmesher::report::MakeReport(this->ImagePath.toStdString(), this->Image, out.Mesh);
-  report.Outputs = { "(not saved)" };
+  labelmesher::report::RunContext context;
+  context.Input = this->ImagePath.toStdString();
+  context.Outputs = { "(not saved)" };
   for (const QString& note : this->Notes)
   {
-    report.Notes.push_back(note.toStdString());
+    context.Notes.push_back(note.toStdString());
   }
-  this->Report = report;
-  this->Curves.reset();
-  if (out.Curved)
-  {
-    this->Curves = labelmesher::report::MakeCurveReport(report, out.Curved);
-  }
+  labelmesher::report::RunReports reports =
+    labelmesher::report::MakeRunReports(context, this->Image, out.Mesh, out.Curved);
+  this->Report = std::move(reports.Linear);
+  this->Curves = std::move(reports.Curved);
 
   std::map<int, QColor> colours;
   for (const labelmesher::MaterialInfo& m : this->Materials.Entries())

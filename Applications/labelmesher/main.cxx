@@ -147,25 +147,26 @@ int Run(const Arguments& args)
   const std::vector<std::string> written = curve
     ? WriteOutputs(args, meshed.Curved, nullptr, table)
     : WriteOutputs(args, meshed.Mesh, meshed.Interfaces, table);
-  RunReport report = MakeReport(args.Input, image, meshed.Mesh);
-  report.Outputs = written;
-  report.Notes = input.Notes;
-  report.StartMemory = startMemory;
-  report.PeakMemory = labelmesher::PeakResidentBytes() / 1048576.0;
-  report.Timings.insert(report.Timings.begin(), { "read", readSeconds });
-  if (!curve)
+  RunContext context;
+  context.Input = args.Input;
+  context.Outputs = written;
+  context.Notes = input.Notes;
+  context.StartMemory = startMemory;
+  context.PeakMemory = labelmesher::PeakResidentBytes() / 1048576.0;
+  context.TimingsBefore = { { "read", readSeconds } };
+  context.TimingsAfter = { { "write", Seconds(writeStart) } };
+  const RunReports reports = MakeRunReports(context, image, meshed.Mesh, curve ? meshed.Curved.GetPointer() : nullptr);
+  if (!reports.Curved)
   {
-    report.Timings.emplace_back("write", Seconds(writeStart));
-    WriteReport(args.Report, report, WriteJson);
+    WriteReport(args.Report, reports.Linear, WriteJson);
     if (!args.Quiet)
     {
-      PrintSummary(report, std::cout);
+      PrintSummary(reports.Linear, std::cout);
     }
     return 0;
   }
 
-  CurveReport curved = MakeCurveReport(report, meshed.Curved);
-  curved.Timings.emplace_back("write", Seconds(writeStart));
+  const CurveReport& curved = *reports.Curved;
   WriteReport(args.Report, curved, WriteCurveJson);
   if (!args.Quiet)
   {

@@ -133,6 +133,28 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   return r;
 }
 
+RunReports MakeRunReports(const RunContext& context, vtkImageData* image, vtkUnstructuredGrid* mesh,
+  vtkUnstructuredGrid* curved)
+{
+  RunReports reports;
+  RunReport& linear = reports.Linear;
+  linear = MakeReport(context.Input, image, mesh);
+  linear.Outputs = context.Outputs;
+  linear.Notes = context.Notes;
+  linear.StartMemory = context.StartMemory;
+  linear.PeakMemory = context.PeakMemory;
+  linear.Timings.insert(linear.Timings.begin(), context.TimingsBefore.begin(), context.TimingsBefore.end());
+  if (!curved || curved->GetNumberOfCells() == 0)
+  {
+    linear.Timings.insert(linear.Timings.end(), context.TimingsAfter.begin(), context.TimingsAfter.end());
+    return reports;
+  }
+  reports.Curved = MakeCurveReport(linear, curved);
+  auto& timings = reports.Curved->Timings;
+  timings.insert(timings.end(), context.TimingsAfter.begin(), context.TimingsAfter.end());
+  return reports;
+}
+
 void PrintCurveSummary(const CurveReport& r, std::ostream& out)
 {
   PrintSummary(r.Linear, out);

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+class vtkImageData;
 class vtkUnstructuredGrid;
 
 namespace labelmesher
@@ -66,6 +67,31 @@ struct CurveReport
 /// The report of `curved` (vtkLabelMesher's output port 2, vtkBezierCurver's output) beside that of
 /// the linear mesh it was curved from; the curver's parameters are those its field data records.
 CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved);
+
+/// What only the caller of a run knows: the input's and the written files' names, the reader's
+/// notes, the stages it timed itself (reading before the filters, writing after) and the
+/// process's resident memory (MiB; a peak of 0: not measured).
+struct RunContext
+{
+  std::string Input;
+  std::vector<std::string> Outputs, Notes;
+  std::vector<std::pair<std::string, double>> TimingsBefore, TimingsAfter;
+  double StartMemory = 0.0, PeakMemory = 0.0;
+};
+
+/// A run's reports: the linear mesh's, and with curves theirs.
+struct RunReports
+{
+  RunReport Linear;
+  std::optional<CurveReport> Curved;
+};
+
+/// The one assembly of a run's report, for the CLI, the viewer and vtkLabelMeshReport: `mesh` and
+/// `curved` are vtkLabelMesher's ports 0 and 2 (`curved` null or without cells: no curves). The
+/// caller's later stages go last in the curve report's timings when there are curves, else in the
+/// linear report's.
+RunReports MakeRunReports(const RunContext& context, vtkImageData* image, vtkUnstructuredGrid* mesh,
+  vtkUnstructuredGrid* curved);
 void PrintCurveSummary(const CurveReport& report, std::ostream& out);
 void WriteCurveJson(const CurveReport& report, std::ostream& out);
 

@@ -270,6 +270,34 @@ class ReportTest(unittest.TestCase):
         self.assertEqual(ours["quality"]["angle_bound_degrees"], 20.0)
         self.assertIn("Both bounds certified", summary)
 
+    def test_a_failed_untangling_keeps_the_linear_mesh_and_the_marked_curves(self):
+        # One load step and one round cannot untangle every cell of this slice (as
+        # RealData.curve_digimouse_sagittal's --check-failure finds through the CLI).
+        reader, _ = read(os.path.join(SHARED, "2d", "digimouse_sagittal.nrrd"))
+        mesher = labelmesher.vtkLabelMesher()
+        errors = record_errors(mesher)
+        mesher.SetInputConnection(reader.GetOutputPort())
+        mesher.SetCurve(True)
+        mesher.SetMaximumUntanglingSteps(1)
+        mesher.SetMaximumShorteningRounds(1)
+        mesher.Update()
+        self.assertEqual(len(errors), 1, errors)
+        self.assertIn("could not be proven valid", errors[0])
+        self.assertGreater(mesher.GetOutput().GetNumberOfCells(), 0)
+        self.assertGreater(mesher.GetInterfacesOutput().GetNumberOfCells(), 0)
+        curved = mesher.GetCurvedOutput()
+        valid = vtk_to_numpy(curved.GetCellData().GetArray("Valid"))
+        self.assertEqual(valid.size, curved.GetNumberOfCells())
+        self.assertTrue(0 < np.count_nonzero(valid == 0) < valid.size)
+        builder = labelmesher.vtkLabelMeshReport()
+        builder.SetImage(reader.GetOutput())
+        builder.SetMesh(mesher.GetOutput())
+        builder.SetCurvedMesh(curved)
+        report = json.loads(builder.GetJSON())
+        self.assertFalse(report["validity"]["valid"])
+        self.assertEqual(report["validity"]["invalid_cells"], int(np.count_nonzero(valid == 0)))
+        self.assertFalse(builder.GetGuaranteesHold())
+
     def test_curve_report_is_the_clis(self):
         image = os.path.join(SHARED, "2d", "digimouse_sagittal.nrrd")
         ours, summary = self.report_of_python(image, Curve=True, Smoothness=2)

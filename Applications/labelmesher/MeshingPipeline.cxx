@@ -20,6 +20,12 @@ vtkSmartPointer<T> CopyOf(T* data)
 }
 } // namespace
 
+vtkLabelMesher* FilterDefaults()
+{
+  static const vtkNew<vtkLabelMesher> defaults;
+  return defaults.GetPointer();
+}
+
 bool IsTwoDimensional(vtkImageData* image)
 {
   return vtkLabelMesher::GetImageDimension(image) == 2;

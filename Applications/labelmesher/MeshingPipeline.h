@@ -12,6 +12,7 @@
 
 #include "FilterRun.h"
 
+#include "vtkLabelMesher.h"      // the defaults
 #include "vtkPolyData.h"         // complete types: the outcome is copied by value
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -30,24 +31,29 @@ struct MeshingError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/// A vtkLabelMesher as constructed: where MeshingSettings' defaults come from, so that the front
+/// ends' defaults are the filter's.
+vtkLabelMesher* FilterDefaults();
+
 struct MeshingSettings
 {
-  double ImageToMeshDistance = 2.0; ///< voxels of the smallest spacing
-  double MeshToImageDistance = 2.0; ///< voxels of the smallest spacing
-  bool Decimate = true;             ///< decimate the mesher's mesh (vtkLabelMesher, streamed)
-  long long BlockCells = 1000000;   ///< initial cells per streamed block; 0: one block
-  double MinimumAngle = 15.0;       ///< degrees, the decimator's bound; (0, 30] in 3D, (0, 45] in 2D
-  bool RelocateInteriorVertices = true; ///< the decimator moves interior vertices between rounds
-  bool IncludeBackground = false;   ///< keep background cells in the final mesh
-  bool Measure = true;              ///< measure the final mesh (angles, distances, topology)
-  double MemoryLimit = 0.0;         ///< MiB the process may hold at most; 0: the machine's limits only
-  // vtkBezierCurver (`labelmesher curve`): 2D images only; its defaults
-  bool Curve = false;
-  int Smoothness = 1;               ///< 1 (C1, fitted to the image) or 2 (C2)
-  double Tension = 1.0 / 3.0;       ///< C1 handle length factor, dimensionless, [0, 1]
-  int MaximumUntanglingSteps = 64;
-  int MaximumShorteningRounds = 8;
-  int QualityIterations = 0;
+  double ImageToMeshDistance = FilterDefaults()->GetImageToMeshDistance(); ///< voxels of the smallest spacing
+  double MeshToImageDistance = FilterDefaults()->GetMeshToImageDistance(); ///< voxels of the smallest spacing
+  bool Decimate = FilterDefaults()->GetDecimate(); ///< decimate the mesher's mesh (streamed by blocks)
+  long long BlockCells = FilterDefaults()->GetBlockCells(); ///< initial cells per streamed block; 0: one block
+  /// Degrees, the decimator's bound: (0, vtkLabelMesher::GetProvenAngleBound(dimension)].
+  double MinimumAngle = FilterDefaults()->GetMinimumAngle();
+  bool RelocateInteriorVertices = FilterDefaults()->GetRelocateInteriorVertices(); ///< move interior vertices between rounds
+  bool IncludeBackground = FilterDefaults()->GetIncludeBackground(); ///< keep background cells in the final mesh
+  bool Measure = FilterDefaults()->GetMeasureOutput(); ///< measure the final mesh (angles, distances, topology)
+  double MemoryLimit = FilterDefaults()->GetMemoryLimit(); ///< MiB the process may hold at most; 0: the machine's limits only
+  // Curving (`labelmesher curve`): 2D images only
+  bool Curve = FilterDefaults()->GetCurve();
+  int Smoothness = FilterDefaults()->GetSmoothness(); ///< 1 (C1, fitted to the image) or 2 (C2)
+  double Tension = FilterDefaults()->GetTension();    ///< C1 handle length factor, dimensionless, [0, 1]
+  int MaximumUntanglingSteps = FilterDefaults()->GetMaximumUntanglingSteps();
+  int MaximumShorteningRounds = FilterDefaults()->GetMaximumShorteningRounds();
+  int QualityIterations = FilterDefaults()->GetQualityIterations();
 };
 
 struct MeshingOutcome

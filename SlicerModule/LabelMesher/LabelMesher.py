@@ -48,6 +48,9 @@ MINIMUM_ANGLE_LIMIT = max(labelmesher.vtkLabelMesher.GetProvenAngleBound(2),
                           labelmesher.vtkLabelMesher.GetProvenAngleBound(3))
 
 
+_DEFAULTS = MeshingParameters()
+
+
 def limitAngleSlider(slider):
     """The .ui's slider ends where the proven bounds do (the filters' figure, not a copy of it)."""
     slider.maximum = MINIMUM_ANGLE_LIMIT
@@ -59,16 +62,17 @@ class LabelMesherParameterNode:
     inputSegmentation: slicer.vtkMRMLSegmentationNode
     inputLabelmap: slicer.vtkMRMLLabelMapVolumeNode
     outputModel: slicer.vtkMRMLModelNode
-    imageToMeshDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
-    meshToImageDistance: Annotated[float, WithinRange(0.0, 64.0)] = 2.0
-    decimate: bool = True
-    minimumAngle: Annotated[float, WithinRange(1.0, MINIMUM_ANGLE_LIMIT)] = 15.0
-    includeBackground: bool = False
-    curve: bool = False
-    smoothness: Annotated[int, WithinRange(1, 2)] = 1
-    tension: Annotated[float, WithinRange(0.0, 1.0)] = 1.0 / 3.0
-    blockCells: Annotated[int, WithinRange(0, 2147483647)] = 1000000
-    memoryLimit: Annotated[float, WithinRange(0.0, 1.0e7)] = 0.0
+    # The defaults are the filter's (MeshingParameters takes them from vtkLabelMesher).
+    imageToMeshDistance: Annotated[float, WithinRange(0.0, 64.0)] = _DEFAULTS.image_to_mesh_distance
+    meshToImageDistance: Annotated[float, WithinRange(0.0, 64.0)] = _DEFAULTS.mesh_to_image_distance
+    decimate: bool = _DEFAULTS.decimate
+    minimumAngle: Annotated[float, WithinRange(1.0, MINIMUM_ANGLE_LIMIT)] = _DEFAULTS.minimum_angle
+    includeBackground: bool = _DEFAULTS.include_background
+    curve: bool = _DEFAULTS.curve
+    smoothness: Annotated[int, WithinRange(1, 2)] = _DEFAULTS.smoothness
+    tension: Annotated[float, WithinRange(0.0, 1.0)] = _DEFAULTS.tension
+    blockCells: Annotated[int, WithinRange(0, 2147483647)] = _DEFAULTS.block_cells
+    memoryLimit: Annotated[float, WithinRange(0.0, 1.0e7)] = _DEFAULTS.memory_limit
 
 
 class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):

@@ -29,6 +29,7 @@ from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
 import labelmesher
 
 _MESHER = labelmesher.vtkLabelMesher
+_DEFAULTS = _MESHER()
 
 
 class MeshingError(Exception):
@@ -52,16 +53,17 @@ class MeshingParameters:
     # h(I,M) (MesherParameters.h): every point of the image boundary lies within this of the mesh
     # boundary, per material; h(M,I): every point of the mesh boundary between two materials lies
     # within this of the image boundary between them.
-    image_to_mesh_distance: float = 2.0
-    mesh_to_image_distance: float = 2.0
-    decimate: bool = True
-    minimum_angle: float = 15.0  # the decimator keeps every angle at least this (<= vtkLabelMesher.GetProvenAngleBound)
-    include_background: bool = False
-    curve: bool = False  # one slice only: curve the mesh (vtkBezierCurver), keeping validity and both bounds
-    smoothness: int = 1  # 1 (C1, fitted to the image) or 2 (C2) at the curves' joints
-    tension: float = 1.0 / 3.0  # C1 handle length factor, dimensionless, [0, 1]
-    block_cells: int = 1000000  # decimating: initial cells per block (0: one block), vtkLabelMesher's BlockCells
-    memory_limit: float = 0.0  # MiB the process may hold; a run estimated above it is refused (0: available memory)
+    # Every default is vtkLabelMesher's own (_DEFAULTS, a filter as constructed).
+    image_to_mesh_distance: float = _DEFAULTS.GetImageToMeshDistance()
+    mesh_to_image_distance: float = _DEFAULTS.GetMeshToImageDistance()
+    decimate: bool = _DEFAULTS.GetDecimate()
+    minimum_angle: float = _DEFAULTS.GetMinimumAngle()  # the decimator keeps every angle at least this (<= GetProvenAngleBound)
+    include_background: bool = _DEFAULTS.GetIncludeBackground()
+    curve: bool = _DEFAULTS.GetCurve()  # one slice only: curve the mesh, keeping validity and both bounds
+    smoothness: int = _DEFAULTS.GetSmoothness()  # 1 (C1, fitted to the image) or 2 (C2) at the curves' joints
+    tension: float = _DEFAULTS.GetTension()  # C1 handle length factor, dimensionless, [0, 1]
+    block_cells: int = _DEFAULTS.GetBlockCells()  # decimating: initial cells per block (0: one block)
+    memory_limit: float = _DEFAULTS.GetMemoryLimit()  # MiB the process may hold; a run estimated above it is refused (0: available memory)
 
     def validate(self, dimension: int):
         for name in ("image_to_mesh_distance", "mesh_to_image_distance"):

@@ -85,6 +85,10 @@ inline constexpr char Tension[] = "Tension";
 inline constexpr char MaximumUntanglingSteps[] = "MaximumUntanglingSteps";
 inline constexpr char MaximumShorteningRounds[] = "MaximumShorteningRounds";
 inline constexpr char QualityIterations[] = "QualityIterations";
+/// The certified scaled Jacobian every curved cell was asked to keep (0: validity alone).
+inline constexpr char MinimumScaledJacobianBound[] = "MinimumScaledJacobianBound";
+inline constexpr char CellsBelowScaledJacobian[] = "CellsBelowScaledJacobian"; ///< after the rounds, before straightening
+inline constexpr char StraightenedForScaledJacobian[] = "StraightenedForScaledJacobian"; ///< 1: every curve made straight
 inline constexpr char InvalidBeforeUntangling[] = "InvalidBeforeUntangling";
 inline constexpr char InvalidCells[] = "InvalidCells";
 inline constexpr char UntanglingSteps[] = "UntanglingSteps";

@@ -257,6 +257,8 @@ void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result
   AddScalarField(fd, arrays::PiecesShortenedForValidity, static_cast<double>(result.PiecesShortenedForValidity));
   AddScalarField(fd, arrays::UncertifiedPieces, static_cast<double>(result.UncertifiedPieces));
   AddScalarField(fd, arrays::UntanglingRounds, result.UntanglingRounds);
+  AddScalarField(fd, arrays::CellsBelowScaledJacobian, static_cast<double>(result.CellsBelowScaledJacobian));
+  AddScalarField(fd, arrays::StraightenedForScaledJacobian, result.StraightenedForScaledJacobian ? 1.0 : 0.0);
 }
 
 /// Pass 5 (field data): the curves' distances, crossings and topology against the image.
@@ -338,6 +340,7 @@ int vtkBezierCurver::RequestData(
   parameters.Untangling.MaximumSteps = this->MaximumUntanglingSteps;
   parameters.MaximumShorteningRounds = this->MaximumShorteningRounds;
   parameters.Untangling.QualityIterations = this->QualityIterations;
+  parameters.MinimumScaledJacobian = this->MinimumScaledJacobian;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
   if (imageData &&
@@ -380,6 +383,7 @@ int vtkBezierCurver::RequestData(
   AddScalarField(fd, arrays::MaximumUntanglingSteps, this->MaximumUntanglingSteps);
   AddScalarField(fd, arrays::MaximumShorteningRounds, this->MaximumShorteningRounds);
   AddScalarField(fd, arrays::QualityIterations, this->QualityIterations);
+  AddScalarField(fd, arrays::MinimumScaledJacobianBound, this->MinimumScaledJacobian);
   AddCurvingCounts(fd, result);
 
   // ---- (5) accuracy against the image ----
@@ -419,6 +423,7 @@ void vtkBezierCurver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
   os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
+  os << indent << "MinimumScaledJacobian: " << this->MinimumScaledJacobian << "\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
   os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
   os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";

@@ -90,6 +90,15 @@
  * midpoint first (with the cell across it): the output may have a few more cells
  * than the input, over the same region.
  *
+ * Quality: every cell's certified scaled Jacobian (cell data `ScaledJacobian`,
+ * min det J / max det J bounded by the Bernstein coefficients of det J with
+ * subdivision) is at least MinimumScaledJacobian (default 0.1): the curves
+ * around a cell below it are shortened as for an invalid cell, straightened at
+ * once after MaximumShorteningRounds, for up to 8 more rounds; if cells are
+ * still below it then, every curve is made straight (field data
+ * `MinimumScaledJacobianBound`, `CellsBelowScaledJacobian`,
+ * `StraightenedForScaledJacobian`).
+ *
  * If some cell cannot be made valid within MaximumUntanglingSteps and
  * MaximumShorteningRounds, the filter
  * reports an error naming the count, and still outputs the mesh with those cells
@@ -168,6 +177,20 @@ public:
 
   ///@{
   /**
+   * The smallest scaled Jacobian every cell keeps, certified (min det J / max
+   * det J bounded by the Bernstein coefficients of det J with subdivision;
+   * cell data `ScaledJacobian`): dimensionless, [0, 1). Cells below it get the
+   * curves around them shortened, as invalid cells do; if the rounds run out
+   * first, every curve is made straight (the linear cells have 1). Default
+   * 0.1 (what Gmsh's high-order optimiser aims at, Mesh.HighOrderThresholdMin);
+   * 0: validity alone.
+   */
+  vtkSetClampMacro(MinimumScaledJacobian, double, 0.0, 0.999);
+  vtkGetMacro(MinimumScaledJacobian, double);
+  ///@}
+
+  ///@{
+  /**
    * The distance bounds the curved interfaces keep against the image on port
    * 1, h(I, M) and h(M, I) in voxels; pieces that would break one are
    * shortened (see the class description). Negative (the default): the bounds
@@ -199,6 +222,7 @@ protected:
   int MaximumUntanglingSteps = 64;
   int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
+  double MinimumScaledJacobian = 0.1;
   double ImageToMeshDistance = -1.0;
   double MeshToImageDistance = -1.0;
 

@@ -147,7 +147,7 @@ bool vtkLabelMeshReport::GetGuaranteesHold()
     {
       return false;
     }
-    return !f.Curved || (f.Curved->Valid() && f.Curved->CurvesFaithful());
+    return !f.Curved || (f.Curved->Valid() && f.Curved->CurvesFaithful() && f.Curved->ScaledJacobianHolds());
   }
   catch (const std::exception& e)
   {

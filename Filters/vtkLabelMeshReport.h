@@ -120,7 +120,8 @@ public:
    * True when the linear mesh was measured and every guarantee holds as
    * measured: the angle bound, both distances certified, no inverted cell,
    * the topology of every material; with a curved mesh also every curved cell
-   * proven valid and the curves within the bounds with the topology kept.
+   * proven valid with its certified scaled Jacobian at least the bound asked
+   * for, and the curves within the bounds with the topology kept.
    */
   bool GetGuaranteesHold();
 

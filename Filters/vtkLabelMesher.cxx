@@ -226,6 +226,7 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
   curver->SetMaximumUntanglingSteps(this->MaximumUntanglingSteps);
   curver->SetMaximumShorteningRounds(this->MaximumShorteningRounds);
   curver->SetQualityIterations(this->QualityIterations);
+  curver->SetMinimumScaledJacobian(this->MinimumScaledJacobian);
   // Copies, so that the inner pipeline leaves this filter's output and input alone.
   vtkNew<vtkUnstructuredGrid> mesh;
   mesh->ShallowCopy(linear);
@@ -374,4 +375,5 @@ void vtkLabelMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
   os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
+  os << indent << "MinimumScaledJacobian: " << this->MinimumScaledJacobian << "\n";
 }

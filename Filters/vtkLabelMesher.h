@@ -27,8 +27,8 @@
  *
  * Curve on (2D images only): vtkBezierCurver then curves that mesh with the
  * image (its Smoothness, Tension, MaximumUntanglingSteps,
- * MaximumShorteningRounds, QualityIterations), keeping the bounds the linear
- * mesh records; the cubic Bezier mesh is output port 2.
+ * MaximumShorteningRounds, QualityIterations, MinimumScaledJacobian), keeping
+ * the bounds the linear mesh records; the cubic Bezier mesh is output port 2.
  *
  * Input port 0: the label image, as vtkLabelOctreeMesher's (integer point
  * scalars or the array selected with SetInputArrayToProcess(0, 0, 0, POINTS,
@@ -230,6 +230,16 @@ public:
   vtkGetMacro(QualityIterations, int);
   ///@}
 
+  ///@{
+  /**
+   * The smallest certified scaled Jacobian (min det J / max det J) of every
+   * curved cell, as vtkBezierCurver's MinimumScaledJacobian: [0, 1), default
+   * 0.1.
+   */
+  vtkSetClampMacro(MinimumScaledJacobian, double, 0.0, 0.999);
+  vtkGetMacro(MinimumScaledJacobian, double);
+  ///@}
+
   /**
    * The linear mesh's interfaces (output port 1).
    */
@@ -264,6 +274,7 @@ protected:
   int MaximumUntanglingSteps = 64;
   int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
+  double MinimumScaledJacobian = 0.1;
 
 private:
   // The stages; each returns false when the run ends there (error, abort, no cells).

@@ -299,7 +299,7 @@ void MainWindow::onFinished()
   {
     done += tr("; CURVING FAILED: %1").arg(QString::fromStdString(out.CurveError));
   }
-  else if (this->Curves && !this->Curves->CurvesFaithful())
+  else if (this->Curves && (!this->Curves->CurvesFaithful() || !this->Curves->ScaledJacobianHolds()))
   {
     done += tr("; THE CURVES BREAK A BOUND (see the summary)");
   }

@@ -123,6 +123,17 @@ long long ParseBlockCells(const std::string& text)
   return value * unit;
 }
 
+double ParseScaledJacobian(const std::string& text)
+{
+  double value = -1.0;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stod(t, used); };
+  if (!ReadWhole(text, read, value) || !(value >= 0.0 && value < 1.0))
+  {
+    throw UsageError("--min-scaled-jacobian expects a number in [0, 1), got '" + text + "'");
+  }
+  return value;
+}
+
 double ParseTension(const std::string& text)
 {
   double value = -1.0;
@@ -254,6 +265,11 @@ const std::vector<Option>& Options()
       [](Reading& r, const std::string& v) {
         r.Args.Settings.MaximumShorteningRounds = ParseCount("--max-shortening-rounds", v, 1);
       } },
+    { nullptr, "--min-scaled-jacobian", "R", true,
+      "every curved cell's certified min det J / max det J\n"
+      "at least R, in [0, 1): curves pulled back until it\n"
+      "holds (0: validity alone)                   [default 0.1]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.MinimumScaledJacobian = ParseScaledJacobian(v); } },
     { nullptr, "--quality-iterations", "N", true,
       "further fraction doublings kept when the worst\n"
       "scaled Jacobian improves                    [default 0]",

@@ -49,6 +49,7 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetMaximumUntanglingSteps(settings.MaximumUntanglingSteps);
   mesher->SetMaximumShorteningRounds(settings.MaximumShorteningRounds);
   mesher->SetQualityIterations(settings.QualityIterations);
+  mesher->SetMinimumScaledJacobian(settings.MinimumScaledJacobian);
   mesher->SetInputData(image);
   const FilterMessages messages = UpdateFilter(mesher, progress);
 

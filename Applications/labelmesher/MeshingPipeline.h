@@ -54,6 +54,8 @@ struct MeshingSettings
   int MaximumUntanglingSteps = FilterDefaults()->GetMaximumUntanglingSteps();
   int MaximumShorteningRounds = FilterDefaults()->GetMaximumShorteningRounds();
   int QualityIterations = FilterDefaults()->GetQualityIterations();
+  /// Every curved cell's certified min det J / max det J at least this, [0, 1).
+  double MinimumScaledJacobian = FilterDefaults()->GetMinimumScaledJacobian();
 };
 
 struct MeshingOutcome

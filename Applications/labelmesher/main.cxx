@@ -177,6 +177,11 @@ int Run(const Arguments& args)
   {
     throw RunError(meshed.CurveError);
   }
+  if (!curved.ScaledJacobianHolds())
+  {
+    throw RunError("a curved cell's scaled Jacobian is below " + FormatFixed(curved.ScaledJacobianBound, 3) +
+      " (see the report); the mesh is written for inspection");
+  }
   if (!curved.CurvesFaithful())
   {
     throw RunError("the curved mesh breaks a distance bound, crosses an interface or changes the topology "

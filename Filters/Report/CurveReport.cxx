@@ -66,6 +66,9 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.MaximumUntanglingSteps = static_cast<int>(FieldCount(fd, arrays::MaximumUntanglingSteps));
   r.MaximumShorteningRounds = static_cast<int>(FieldCount(fd, arrays::MaximumShorteningRounds));
   r.QualityIterations = static_cast<int>(FieldCount(fd, arrays::QualityIterations));
+  r.ScaledJacobianBound = FieldValue(fd, arrays::MinimumScaledJacobianBound).value_or(0.0);
+  r.CellsBelowScaledJacobian = FieldCount(fd, arrays::CellsBelowScaledJacobian);
+  r.StraightenedForScaledJacobian = FieldCount(fd, arrays::StraightenedForScaledJacobian) != 0;
   r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
   r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
   r.ValidityMeasured = fd->GetArray(arrays::InvalidCells) != nullptr;
@@ -167,7 +170,10 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
       << " after; " << r.UntanglingSteps << " load steps)\n";
   out << "Pieces shortened: " << r.ShortenedPieces << " of " << r.CurvedEdges << " (" << r.StraightenedPieces
       << " straight; " << r.PiecesShortenedForBounds << " for the distance bounds, " << r.PiecesShortenedForValidity
-      << " for validity; " << r.UntanglingRounds << " untangling rounds)\n";
+      << " for validity and the scaled Jacobian; " << r.UntanglingRounds << " untangling rounds)\n";
+  out << "Scaled Jacobian: every cell " << (r.ScaledJacobianHolds() ? "at least " : "NOT at least ")
+      << FormatFixed(r.ScaledJacobianBound, 3) << " (certified; smallest " << FormatFixed(r.MinimumScaledJacobian, 4)
+      << ")" << (r.StraightenedForScaledJacobian ? "; every curve made straight to reach it" : "") << "\n";
   if (r.MeasuredImageToMesh && r.MeasuredMeshToImage)
   {
     auto bound = [](const std::optional<double>& b) { return b ? FormatFixed(*b, 3) : std::string("none"); };
@@ -226,6 +232,7 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("tension").Number(r.Tension);
   j.Key("maximum_untangling_steps").Integer(r.MaximumUntanglingSteps);
   j.Key("maximum_shortening_rounds").Integer(r.MaximumShorteningRounds);
+  j.Key("minimum_scaled_jacobian").Number(r.ScaledJacobianBound);
   j.Key("quality_iterations").Integer(r.QualityIterations);
   j.Key("image_to_mesh").Number(r.Linear.ImageToMeshBound);
   j.Key("mesh_to_image").Number(r.Linear.MeshToImageBound);
@@ -295,6 +302,9 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("invalid_cells").Integer(r.InvalidCells);
   j.Key("untangling_steps").Integer(r.UntanglingSteps);
   j.Key("minimum_scaled_jacobian").Number(r.MinimumScaledJacobian);
+  j.Key("scaled_jacobian_bound_holds").Bool(r.ScaledJacobianHolds());
+  j.Key("cells_below_scaled_jacobian_bound").Integer(r.CellsBelowScaledJacobian);
+  j.Key("straightened_for_scaled_jacobian").Bool(r.StraightenedForScaledJacobian);
   j.Key("minimum_jacobian").Number(r.MinimumJacobian);
   j.Key("scaled_jacobian_histogram").BeginArray();
   for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)

@@ -60,6 +60,13 @@ struct CurveReport
   std::map<int, std::pair<PixelCounts, PixelCounts>> AccuracyPerMaterial; ///< linear, curved
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
 
+  /// The certified scaled Jacobian every cell was asked to keep (0: validity alone); the cells
+  /// still below it after the shortening rounds, and whether every curve was then made straight.
+  double ScaledJacobianBound = 0.0;
+  long long CellsBelowScaledJacobian = 0;
+  bool StraightenedForScaledJacobian = false;
+  /// Every cell's certified scaled Jacobian is at least the bound.
+  bool ScaledJacobianHolds() const { return this->MinimumScaledJacobian >= this->ScaledJacobianBound; }
   bool ValidityMeasured = false; ///< the curver recorded InvalidCells
   bool Valid() const { return this->ValidityMeasured && this->InvalidCells == 0; }
 };

@@ -549,6 +549,11 @@ def case_curve_good_png():
         assert decimation["cells_after"] == report["linear_mesh"]["cells"] < decimation["cells_before"]
         assert report["parameters"]["smoothness"] == int(smoothness)
         assert report["validity"]["valid"] is True and report["validity"]["invalid_cells"] == 0
+        # The scaled Jacobian bound (default 0.1): the certified smallest and the written cells.
+        assert report["parameters"]["minimum_scaled_jacobian"] == 0.1
+        assert report["validity"]["minimum_scaled_jacobian"] >= 0.1, report["validity"]
+        assert report["validity"]["scaled_jacobian_bound_holds"] is True
+        assert "Scaled Jacobian: every cell at least 0.100" in result.stdout, result.stdout
         curved = report["curved_mesh"]
         assert curved["cells"] == grid.GetNumberOfCells()
         assert curved["control_points"] == grid.GetNumberOfPoints()
@@ -606,6 +611,9 @@ def case_curve_bad_options():
                    "--no-decimate", 2)
     expect_failure(run("curve", png, "-o", path("out.vtu"), "--decimate", "--no-decimate"), "contradict", 2)
     expect_failure(run("mesh", png, "-o", path("out.vtu"), "--smoothness", "2"), "'curve' only", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-scaled-jacobian", "1"), "[0, 1)", 2)
+    expect_failure(run("curve", png, "-o", path("out.vtu"), "--min-scaled-jacobian", "-0.1"), "[0, 1)", 2)
+    expect_failure(run("mesh", png, "-o", path("out.vtu"), "--min-scaled-jacobian", "0.2"), "'curve' only", 2)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@
 #include "LabelMesherArrayNames.h"
 #include "vtkLabelMesher.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
@@ -147,6 +148,14 @@ TEST(vtkLabelMeshReport, ACurvedMeshGivesTheCurveReport)
   Spoil(curved, arrays::InterfaceCrossings, 2.0);
   EXPECT_FALSE(report->GetGuaranteesHold()) << "crossing curves";
   Spoil(curved, arrays::InterfaceCrossings, 0.0);
+  ASSERT_TRUE(report->GetGuaranteesHold());
+  vtkDataArray* scaled = curved->GetCellData()->GetArray(arrays::ScaledJacobian);
+  ASSERT_NE(scaled, nullptr);
+  const double kept = scaled->GetComponent(0, 0);
+  scaled->SetComponent(0, 0, 0.05);
+  EXPECT_FALSE(report->GetGuaranteesHold()) << "a cell below the scaled Jacobian bound (0.1)";
+  EXPECT_TRUE(Contains(report->GetSummary(), "Scaled Jacobian: every cell NOT at least 0.100"));
+  scaled->SetComponent(0, 0, kept);
   ASSERT_TRUE(report->GetGuaranteesHold());
   curved->GetFieldData()->RemoveArray(arrays::InvalidCells);
   EXPECT_FALSE(report->GetGuaranteesHold()) << "validity not recorded is not validity";

@@ -199,6 +199,78 @@ class DecimatedPipelineTest(unittest.TestCase):
                              self.field("ShortenedPieces"))
 
 
+def sampled_jacobian_ratios(grid, plane_axes, samples=7):
+    """Per cell, the smallest over the largest det J of VTK's own evaluation at interior points:
+    at least the true min det J / max det J of the cell."""
+    ratios = []
+    h = 1e-6
+    sub_id = mutable(0)
+    weights = [0.0] * 10
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+
+        def at(r, s):
+            x = [0.0, 0.0, 0.0]
+            cell.EvaluateLocation(sub_id, [r, s, 0.0], x, weights)
+            return np.array([x[plane_axes[0]], x[plane_axes[1]]])
+
+        dets = []
+        for i in range(1, samples):
+            for j in range(1, samples - i):
+                r, s = i / samples, j / samples
+                dr = (at(r + h, s) - at(r - h, s)) / (2 * h)
+                ds = (at(r, s + h) - at(r, s - h)) / (2 * h)
+                dets.append(dr[0] * ds[1] - dr[1] * ds[0])
+        ratios.append(min(dets) / max(dets))
+    return np.array(ratios)
+
+
+class ScaledJacobianTest(unittest.TestCase):
+    """The shared digimouse slice through the reader, mesher and decimator: without a scaled
+    Jacobian bound some curved cells fall far below 0.1; with the default 0.1 every cell's certified
+    ratio is at least that, and VTK's own evaluation of the cells agrees."""
+
+    @classmethod
+    def setUpClass(cls):
+        import os
+        path = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "2d",
+                            "digimouse_sagittal.nrrd")
+        cls.reader = labelmesher.vtkLabelImageReader()
+        cls.reader.SetFileName(path)
+        cls.reader.Update()
+        mesher = labelmesher.vtkLabelMesher()
+        mesher.SetInputConnection(cls.reader.GetOutputPort())
+        mesher.Update()
+        cls.linear = mesher.GetOutput()
+
+    def curved(self, bound):
+        grid, errors = run_filter(labelmesher.vtkBezierCurver(), self.linear, self.reader.GetOutput(),
+                                  MinimumScaledJacobian=bound)
+        self.assertEqual(errors, [])
+        return grid, vtk_to_numpy(grid.GetCellData().GetArray("ScaledJacobian"))
+
+    def test_default_is_a_tenth(self):
+        self.assertEqual(labelmesher.vtkBezierCurver().GetMinimumScaledJacobian(), 0.1)
+
+    def test_without_the_bound_cells_fall_below(self):
+        _, scaled = self.curved(0.0)
+        self.assertLess(scaled.min(), 0.1)
+
+    def test_every_cell_keeps_the_bound(self):
+        grid, scaled = self.curved(0.1)
+        self.assertGreaterEqual(scaled.min(), 0.1)
+        fd = grid.GetFieldData()
+        self.assertEqual(fd.GetArray("MinimumScaledJacobianBound").GetValue(0), 0.1)
+        self.assertEqual(fd.GetArray("StraightenedForScaledJacobian").GetValue(0), 0)
+        self.assertEqual(fd.GetArray("InvalidCells").GetValue(0), 0)
+        # The image's axes: the slice lies across one of them.
+        dims = self.reader.GetOutput().GetDimensions()
+        axes = tuple(a for a in range(3) if dims[a] > 1)
+        ratios = sampled_jacobian_ratios(grid, axes)
+        self.assertGreaterEqual(ratios.min(), 0.1 - 1e-6)
+        self.assertTrue(np.all(ratios >= scaled - 1e-6), "a certified ratio above VTK's sampled one")
+
+
 class PlaneTest(unittest.TestCase):
     def test_mesh_in_the_xz_plane(self):
         grid, errors = curve(disc_image(normal_axis=1))

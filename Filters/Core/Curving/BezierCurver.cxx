@@ -184,6 +184,20 @@ Box2 BoxAroundMesh(const SimplexMesh& mesh)
   return { box[0] - margin, box[1] + margin, box[2] - margin, box[3] + margin };
 }
 
+/// Rounds after MaximumShorteningRounds for cells below the scaled Jacobian bound alone.
+constexpr int kStraighteningRounds = 8;
+
+/// The cells of `mesh` whose certified scaled Jacobian is below `bound`, in order (none when the
+/// bound is 0: validity alone is asked).
+std::vector<std::size_t> CellsBelowScaledJacobian(const CurvedMesh& mesh, double bound)
+{
+  std::vector<std::size_t> below;
+  for (std::size_t c = 0; bound > 0.0 && c < mesh.Cells.size(); ++c)
+    if (BoundJacobian(mesh.Cell(c)).ScaledJacobian() < bound)
+      below.push_back(c);
+  return below;
+}
+
 /// Cells not proven valid when the control points sit at `positions` (the
 /// mesh's cells, other positions): no copy of the mesh's cells and edge map.
 std::size_t CountInvalidCells(const CurvedMesh& mesh, const std::vector<Point2>& positions)
@@ -279,9 +293,36 @@ CurvingResult CurveMesh(
     result.UntanglingSteps = untangled.Steps;
     result.UntanglingRounds = round + 1;
     result.Timings.push_back({ "untangle", SecondsSince(start) });
-    if (untangled.Valid || round + 1 >= parameters.MaximumShorteningRounds ||
-      !ShortenPiecesOfCells(result.Linear, untangled.InvalidCells, invalidRounds, pieces, shortenedForValidity))
+    // Invalid cells first; a valid mesh may still have cells below the scaled Jacobian asked for.
+    std::vector<std::size_t> failing = untangled.InvalidCells;
+    if (untangled.Valid)
+      failing = CellsBelowScaledJacobian(result.Mesh, parameters.MinimumScaledJacobian);
+    // Past the rounds asked for, a valid mesh whose cells are below the bound gets a few more,
+    // each making the curves around them straight at once (halving again would not end).
+    const bool pastRounds = round + 1 >= parameters.MaximumShorteningRounds;
+    if (pastRounds && untangled.Valid)
+      for (std::size_t c : failing)
+        invalidRounds[c] = std::max(invalidRounds[c], 1);
+    if (failing.empty() || (pastRounds && !untangled.Valid) ||
+      round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
+      !ShortenPiecesOfCells(result.Linear, failing, invalidRounds, pieces, shortenedForValidity))
+    {
+      result.CellsBelowScaledJacobian = untangled.Valid ? failing.size() : 0;
       break;
+    }
+  }
+  // The last resort of the scaled Jacobian bound: the straight cells of the linear mesh (ratio 1).
+  if (result.CellsBelowScaledJacobian > 0)
+  {
+    for (CurvePiece& piece : pieces)
+      if (piece.Scale > 0.0)
+      {
+        piece.Scale = 0.0;
+        shortenedForValidity.insert(static_cast<std::size_t>(&piece - pieces.data()));
+      }
+    result.Mesh = straight;
+    UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling);
+    result.StraightenedForScaledJacobian = true;
   }
   result.PiecesShortenedForBounds = shortenedForBounds.size();
   result.PiecesShortenedForValidity = shortenedForValidity.size();

@@ -61,8 +61,14 @@ struct CurvingParameters
   /// >= 0 to be enforced), and the polyline tolerance that certifies them.
   CurveBounds Bounds{ -1.0, -1.0, 1.0 / 256.0 };
   /// Most untangling rounds, each after shortening the pieces of the cells the
-  /// previous one left invalid.
+  /// previous one left invalid (or below MinimumScaledJacobian).
   int MaximumShorteningRounds = 8;
+  /// Every cell's scaled Jacobian, min det J / max det J certified by the Bernstein coefficients
+  /// of det J with subdivision (JacobianBounds::ScaledJacobian, a lower bound of the true ratio),
+  /// at least this, in [0, 1): cells below it get the curves around them shortened like invalid
+  /// ones, and when the rounds run out with cells still below it, every curve is made straight
+  /// (the linear mesh's cells have ratio 1). 0: validity (det J > 0) only.
+  double MinimumScaledJacobian = 0.0;
 };
 
 struct CurvingResult
@@ -95,6 +101,10 @@ struct CurvingResult
   /// Straight pieces the distance test could not certify (expected 0).
   std::size_t UncertifiedPieces = 0;
   int UntanglingRounds = 0;
+  /// Cells whose certified scaled Jacobian stayed below MinimumScaledJacobian after the rounds
+  /// (before every curve was made straight for them), and whether that happened.
+  std::size_t CellsBelowScaledJacobian = 0;
+  bool StraightenedForScaledJacobian = false;
   std::vector<StageTiming> Timings;
 };
 

@@ -68,6 +68,23 @@ TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
 
 INSTANTIATE_TEST_SUITE_P(Shards, CurverProperties, ::testing::Range(0, 4));
 
+/// The scaled Jacobian check can fail: with the curver's bound switched off, some of the same
+/// images have a curved cell below it (and with it on, none: the shards above).
+TEST(CurverPropertiesCheck, WithoutTheBoundSomeCellsFallBelowTheScaledJacobian)
+{
+  int below = 0;
+  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + 4 * kImagesPerShard && below == 0; ++seed)
+  {
+    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
+      testing::DrawDecimationParameters(seed, 2, mesher), testing::DrawSmoothness(seed), nullptr, 0.0);
+    for (const std::string& line : violated)
+      below += line.find("min det J / max det J") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_GT(below, 0) << "no image of the sample has a cell below the scaled Jacobian without the bound";
+}
+
 /// Seeds that once failed a scan (labelmesher_property_scan --curve), with the
 /// cause fixed: curves leaving a vertex within 0.01 voxel of each other's
 /// direction crossed below the polylines' resolution (smooth 104341, 112312;

@@ -21,7 +21,7 @@ Smoothness DrawSmoothness(std::uint64_t seed)
 }
 
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
-  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run)
+  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run, double curverScaledJacobian)
 {
   std::vector<std::string> violated;
   auto fail = [&violated](const std::string& what) { violated.push_back(what); };
@@ -35,6 +35,7 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
   parameters.Image = identity;
   parameters.Bounds.ImageToMesh = mesher.ImageToMeshDistance;
   parameters.Bounds.MeshToImage = mesher.MeshToImageDistance;
+  parameters.MinimumScaledJacobian = curverScaledJacobian;
   try
   {
     out.Linear = ForegroundMesh(DecimateMesh(image, MeshLabelImage(image, mesher).Mesh, decimation).Mesh);
@@ -55,6 +56,17 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
     if (ClassifyValidity(cell) == Validity::Valid && SampledMinimumJacobian(cell) <= 0.0)
     {
       fail("cell " + std::to_string(c) + " proven valid but det J <= 0 at a sample");
+      break;
+    }
+  }
+  // The scaled Jacobian: min det J / max det J at dense samples, which is at least the true ratio.
+  for (std::size_t c = 0; c < result.Mesh.Cells.size(); ++c)
+  {
+    const double ratio = SampledJacobianRatio(result.Mesh.Cell(c));
+    if (ratio < kCurvedScaledJacobian)
+    {
+      fail("cell " + std::to_string(c) + ": sampled min det J / max det J " + std::to_string(ratio) + " below " +
+        std::to_string(kCurvedScaledJacobian));
       break;
     }
   }

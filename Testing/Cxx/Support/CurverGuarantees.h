@@ -38,11 +38,18 @@ struct CurverRun
 /// The curving a test uses for `seed`: C1 or C2 with even odds.
 Smoothness DrawSmoothness(std::uint64_t seed);
 
+/// The scaled Jacobian every curved cell keeps (`labelmesher curve`'s default), asserted here.
+constexpr double kCurvedScaledJacobian = 0.1;
+
 /// Runs the pipeline on `image`; one line per violated guarantee (empty: all
 /// hold). A thrown exception counts as a violation. `run`, when given,
-/// receives the meshes and the pixel accuracy of both.
+/// receives the meshes and the pixel accuracy of both. `curverScaledJacobian`
+/// is what the curver is asked for (kCurvedScaledJacobian is asserted whatever
+/// it is: 0 switches the curver's bound off, which the tests use to show the
+/// check can fail).
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
-  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run = nullptr);
+  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run = nullptr,
+  double curverScaledJacobian = kCurvedScaledJacobian);
 
 } // namespace testing
 } // namespace labelmesher

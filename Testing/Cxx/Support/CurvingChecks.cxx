@@ -56,6 +56,23 @@ double SampledMinimumJacobian(const CubicTriangle& triangle, int n)
   return minimum;
 }
 
+double SampledJacobianRatio(const CubicTriangle& triangle, int n)
+{
+  double minimum = std::numeric_limits<double>::max(), maximum = -minimum;
+  for (int i = 0; i <= n; ++i)
+  {
+    for (int j = 0; j <= n - i; ++j)
+    {
+      const double v = static_cast<double>(i) / n;
+      const double w = static_cast<double>(j) / n;
+      const double det = EvaluateJacobian(triangle, 1.0 - v - w, v, w);
+      minimum = std::min(minimum, det);
+      maximum = std::max(maximum, det);
+    }
+  }
+  return maximum > 0.0 ? minimum / maximum : 0.0;
+}
+
 JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved, const Box2& border,
   Smoothness smoothness, const std::vector<CurvePiece>& pieces)
 {

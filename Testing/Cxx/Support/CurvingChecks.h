@@ -24,6 +24,9 @@ SimplexMesh ForegroundMesh(const SimplexMesh& mesh);
 
 /// Smallest det J over a barycentric grid of `n` steps per side (corners included).
 double SampledMinimumJacobian(const CubicTriangle& triangle, int n = 24);
+/// The smallest over the largest det J at the same samples: at least the true min det J / max
+/// det J, so at least any certified lower bound of it (JacobianBounds::ScaledJacobian).
+double SampledJacobianRatio(const CubicTriangle& triangle, int n = 24);
 
 struct JointContinuity
 {

@@ -24,6 +24,7 @@ inline constexpr char Materials[] = "Materials"; ///< int x 2, labels on either 
 inline constexpr char MinimumJacobian[] = "MinimumJacobian";
 inline constexpr char ScaledJacobian[] = "ScaledJacobian";
 inline constexpr char Valid[] = "Valid";
+inline constexpr char CornerAngle[] = "CornerAngle"; ///< double, a curved cell's smallest corner angle (tangents), degrees
 
 // ---- field data: the materials' names and colours, one tuple per material ----
 // (vtkLabelImageReader fills them from a 3D Slicer segmentation or a colour table; every filter

@@ -219,6 +219,9 @@ void PackBezierCells(const labelmesher::CurvingResult& result, const PlaneAxes& 
   scaledJacobian->SetName(arrays::ScaledJacobian);
   vtkNew<vtkUnsignedCharArray> valid;
   valid->SetName(arrays::Valid);
+  vtkNew<vtkDoubleArray> cornerAngle;
+  cornerAngle->SetName(arrays::CornerAngle);
+  cornerAngle->SetNumberOfValues(cells);
   material->SetNumberOfValues(cells);
   minimumJacobian->SetNumberOfValues(cells);
   scaledJacobian->SetNumberOfValues(cells);
@@ -229,6 +232,7 @@ void PackBezierCells(const labelmesher::CurvingResult& result, const PlaneAxes& 
     material->SetValue(c, curved.Materials[static_cast<std::size_t>(c)]);
     minimumJacobian->SetValue(c, bounds.Lower);
     scaledJacobian->SetValue(c, bounds.ScaledJacobian());
+    cornerAngle->SetValue(c, labelmesher::SmallestCornerAngle(curved.Cell(static_cast<std::size_t>(c))));
     valid->SetValue(c, 1);
   }
   for (std::size_t c : result.InvalidCells)
@@ -238,6 +242,7 @@ void PackBezierCells(const labelmesher::CurvingResult& result, const PlaneAxes& 
   output->GetCellData()->SetScalars(material);
   output->GetCellData()->AddArray(minimumJacobian);
   output->GetCellData()->AddArray(scaledJacobian);
+  output->GetCellData()->AddArray(cornerAngle);
   output->GetCellData()->AddArray(valid);
 }
 

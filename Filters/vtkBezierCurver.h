@@ -60,7 +60,10 @@
  *   cell; physical units squared (a straight cell has 2 x its area);
  * - `ScaledJacobian` (double): MinimumJacobian / proven upper bound of det J, a
  *   conservative min|J| / max|J| (1 for straight cells, <= 0 for invalid ones);
- * - `Valid` (unsigned char): 1 where det J > 0 is proven.
+ * - `Valid` (unsigned char): 1 where det J > 0 is proven;
+ * - `CornerAngle` (double): the smallest angle between the tangents of two
+ *   edges at a corner, degrees (measured, not yet kept at the linear mesh's
+ *   angle bound: curving and the ear split can make it smaller).
  * Field data: `Smoothness`, `Tension`, `MaximumUntanglingSteps`, `MaximumShorteningRounds`,
  * `QualityIterations`; `InvalidBeforeUntangling` (cells made invalid by curving
  * the boundary alone), `InvalidCells`, `UntanglingSteps`, `InterfaceChains`,

@@ -96,6 +96,11 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   vtkDataArray* scaled = curved->GetCellData()->GetArray(arrays::ScaledJacobian);
   vtkDataArray* minimum = curved->GetCellData()->GetArray(arrays::MinimumJacobian);
   vtkDataArray* valid = curved->GetCellData()->GetArray(arrays::Valid);
+  if (vtkDataArray* corners = curved->GetCellData()->GetArray(arrays::CornerAngle))
+  {
+    for (vtkIdType c = 0; c < corners->GetNumberOfTuples(); ++c)
+      r.MinimumCornerAngle = std::min(r.MinimumCornerAngle.value_or(180.0), corners->GetComponent(c, 0));
+  }
   r.MinimumScaledJacobian = r.Cells > 0 ? 1.0 : 0.0;
   r.MinimumJacobian = r.Cells > 0 ? HUGE_VAL : 0.0;
   for (vtkIdType c = 0; scaled && minimum && valid && c < r.Cells; ++c)
@@ -171,6 +176,11 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   out << "Pieces shortened: " << r.ShortenedPieces << " of " << r.CurvedEdges << " (" << r.StraightenedPieces
       << " straight; " << r.PiecesShortenedForBounds << " for the distance bounds, " << r.PiecesShortenedForValidity
       << " for validity and the scaled Jacobian; " << r.UntanglingRounds << " untangling rounds)\n";
+  if (r.MinimumCornerAngle)
+  {
+    out << "Corner angles (between edge tangents): smallest " << FormatFixed(*r.MinimumCornerAngle, 2)
+        << " deg (the linear mesh's bound " << FormatFixed(AngleBoundOf(r.Linear), 2) << " deg; not yet kept)\n";
+  }
   out << "Scaled Jacobian: every cell " << (r.ScaledJacobianHolds() ? "at least " : "NOT at least ")
       << FormatFixed(r.ScaledJacobianBound, 3) << " (certified; smallest " << FormatFixed(r.MinimumScaledJacobian, 4)
       << ")" << (r.StraightenedForScaledJacobian ? "; every curve made straight to reach it" : "") << "\n";
@@ -303,6 +313,11 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("untangling_steps").Integer(r.UntanglingSteps);
   j.Key("minimum_scaled_jacobian").Number(r.MinimumScaledJacobian);
   j.Key("scaled_jacobian_bound_holds").Bool(r.ScaledJacobianHolds());
+  j.Key("minimum_corner_angle_degrees");
+  if (r.MinimumCornerAngle)
+    j.Number(*r.MinimumCornerAngle);
+  else
+    j.Null();
   j.Key("cells_below_scaled_jacobian_bound").Integer(r.CellsBelowScaledJacobian);
   j.Key("straightened_for_scaled_jacobian").Bool(r.StraightenedForScaledJacobian);
   j.Key("minimum_jacobian").Number(r.MinimumJacobian);

@@ -43,6 +43,9 @@ struct CurveReport
   long long InvalidBeforeUntangling = 0, InvalidCells = 0, UntanglingSteps = 0;
   long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0;
   double MinimumScaledJacobian = 0.0, MinimumJacobian = 0.0;
+  /// The smallest corner angle of the curved cells (cell data CornerAngle), degrees; none when
+  /// the curver did not record it.
+  std::optional<double> MinimumCornerAngle;
   /// Scaled Jacobian histogram: bin 0 is <= 0 (not proven valid), bins 1..10
   /// are (0, 0.1], (0.1, 0.2], ..., (0.9, 1].
   std::array<long long, 11> ScaledJacobianHistogram{};

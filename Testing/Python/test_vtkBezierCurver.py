@@ -270,6 +270,25 @@ class ScaledJacobianTest(unittest.TestCase):
         self.assertGreaterEqual(ratios.min(), 0.1 - 1e-6)
         self.assertTrue(np.all(ratios >= scaled - 1e-6), "a certified ratio above VTK's sampled one")
 
+    def test_corner_angles_are_measured_from_the_tangents(self):
+        grid, _ = self.curved(0.1)
+        corners = vtk_to_numpy(grid.GetCellData().GetArray("CornerAngle"))
+        self.assertEqual(corners.size, grid.GetNumberOfCells())
+        # Recomputed from the written control points (VTK order: corner, then its two neighbours).
+        dims = self.reader.GetOutput().GetDimensions()
+        axes = [a for a in range(3) if dims[a] > 1]
+        points = vtk_to_numpy(grid.GetPoints().GetData())[:, axes]
+        cells = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+        smallest = np.full(len(cells), 180.0)
+        for corner, a, b in ((0, 3, 8), (1, 5, 4), (2, 7, 6)):
+            u = points[cells[:, a]] - points[cells[:, corner]]
+            v = points[cells[:, b]] - points[cells[:, corner]]
+            cross = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+            angle = np.degrees(np.arctan2(cross, np.sum(u * v, axis=1)))
+            smallest = np.minimum(smallest, angle)
+        np.testing.assert_allclose(corners, smallest, atol=1e-9)
+        self.assertGreater(corners.min(), 0.0)
+
 
 class PlaneTest(unittest.TestCase):
     def test_mesh_in_the_xz_plane(self):

@@ -7,6 +7,8 @@
 
 #include "Curving/CubicTriangle.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace labelmesher
@@ -54,6 +56,27 @@ Point2 EvaluateCubicTriangle(const CubicTriangle& triangle, double u, double v, 
       result[1] += basis * p[1];
     }
   return result;
+}
+
+double SmallestCornerAngle(const CubicTriangle& triangle)
+{
+  // Corner, then the inner control points of its two edges next to it (VTK order).
+  static constexpr int Corner[3][3] = { { 0, 3, 8 }, { 1, 5, 4 }, { 2, 7, 6 } };
+  double smallest = 180.0;
+  for (const auto& c : Corner)
+  {
+    const Point2& p = triangle.ControlPoints[c[0]];
+    const Point2& a = triangle.ControlPoints[c[1]];
+    const Point2& b = triangle.ControlPoints[c[2]];
+    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
+    const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+    if (la == 0.0 || lb == 0.0)
+      return 0.0;
+    // atan2 of |cross| and dot: accurate near 0 and 180 degrees, unlike acos.
+    const double angle = std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by) * 180.0 / 3.14159265358979323846;
+    smallest = std::min(smallest, angle);
+  }
+  return smallest;
 }
 
 } // namespace labelmesher

@@ -290,6 +290,26 @@ TEST(CubicTriangle, StraightTriangleIsTheAffineMap)
   }
 }
 
+TEST(CubicTriangle, CornerAnglesOfAStraightCellAreItsInteriorAngles)
+{
+  // A 3-4-5 right triangle: 90, atan(4/3) = 53.13 and atan(3/4) = 36.87 degrees.
+  const CubicTriangle t = StraightCubicTriangle({ 0.0, 0.0 }, { 4.0, 0.0 }, { 0.0, 3.0 });
+  EXPECT_NEAR(SmallestCornerAngle(t), std::atan(0.75) * 180.0 / M_PI, 1e-12);
+}
+
+TEST(CubicTriangle, CornerAnglesFollowTheTangentsOfCurvedEdges)
+{
+  // An equilateral cell (60 degrees everywhere) whose edge 0->1 leaves corner 0 bent 20 degrees
+  // towards edge 2->0: the corner angle at 0 is 40 degrees, the others are unchanged.
+  CubicTriangle t = StraightCubicTriangle({ 0.0, 0.0 }, { 3.0, 0.0 }, { 1.5, 1.5 * std::sqrt(3.0) });
+  const double bend = 20.0 * M_PI / 180.0;
+  t.ControlPoints[3] = { std::cos(bend), std::sin(bend) };
+  EXPECT_NEAR(SmallestCornerAngle(t), 40.0, 1e-9);
+  // A tangent that vanishes (the control point on its corner) has no angle.
+  t.ControlPoints[3] = t.ControlPoints[0];
+  EXPECT_EQ(SmallestCornerAngle(t), 0.0);
+}
+
 TEST(JacobianBound, QuarticIndexNumbersTheFifteenMultiIndices)
 {
   std::vector<bool> seen(15, false);

@@ -60,13 +60,13 @@ def curve(image, **settings):
     return run_filter(labelmesher.vtkBezierCurver(), mesher.GetOutput(), image, **settings)
 
 
-def jacobian_signs(grid, plane_axes, samples=7):
-    """det of d(x_a, x_b)/d(r, s) by central differences of VTK's own evaluation
-    of every cell at interior parametric points: (min, max) over all samples."""
-    lowest, highest = np.inf, -np.inf
+def sampled_jacobians(grid, plane_axes, samples=7):
+    """Per cell, det of d(x_a, x_b)/d(r, s) by central differences of VTK's own evaluation at
+    interior parametric points: an array cells x samples."""
     h = 1e-6
     sub_id = mutable(0)
     weights = [0.0] * 10
+    per_cell = []
     for c in range(grid.GetNumberOfCells()):
         cell = grid.GetCell(c)
 
@@ -75,14 +75,21 @@ def jacobian_signs(grid, plane_axes, samples=7):
             cell.EvaluateLocation(sub_id, [r, s, 0.0], x, weights)
             return np.array([x[plane_axes[0]], x[plane_axes[1]]])
 
+        dets = []
         for i in range(1, samples):
             for j in range(1, samples - i):
                 r, s = i / samples, j / samples
                 dr = (at(r + h, s) - at(r - h, s)) / (2 * h)
                 ds = (at(r, s + h) - at(r, s - h)) / (2 * h)
-                det = dr[0] * ds[1] - dr[1] * ds[0]
-                lowest, highest = min(lowest, det), max(highest, det)
-    return lowest, highest
+                dets.append(dr[0] * ds[1] - dr[1] * ds[0])
+        per_cell.append(dets)
+    return np.array(per_cell)
+
+
+def jacobian_signs(grid, plane_axes, samples=7):
+    """(min, max) of the sampled det J over every cell (sampled_jacobians)."""
+    dets = sampled_jacobians(grid, plane_axes, samples)
+    return dets.min(), dets.max()
 
 
 class DiscTest(unittest.TestCase):
@@ -200,29 +207,10 @@ class DecimatedPipelineTest(unittest.TestCase):
 
 
 def sampled_jacobian_ratios(grid, plane_axes, samples=7):
-    """Per cell, the smallest over the largest det J of VTK's own evaluation at interior points:
-    at least the true min det J / max det J of the cell."""
-    ratios = []
-    h = 1e-6
-    sub_id = mutable(0)
-    weights = [0.0] * 10
-    for c in range(grid.GetNumberOfCells()):
-        cell = grid.GetCell(c)
-
-        def at(r, s):
-            x = [0.0, 0.0, 0.0]
-            cell.EvaluateLocation(sub_id, [r, s, 0.0], x, weights)
-            return np.array([x[plane_axes[0]], x[plane_axes[1]]])
-
-        dets = []
-        for i in range(1, samples):
-            for j in range(1, samples - i):
-                r, s = i / samples, j / samples
-                dr = (at(r + h, s) - at(r - h, s)) / (2 * h)
-                ds = (at(r, s + h) - at(r, s - h)) / (2 * h)
-                dets.append(dr[0] * ds[1] - dr[1] * ds[0])
-        ratios.append(min(dets) / max(dets))
-    return np.array(ratios)
+    """Per cell, the smallest over the largest sampled det J (sampled_jacobians): at least the
+    true min det J / max det J of the cell."""
+    dets = sampled_jacobians(grid, plane_axes, samples)
+    return dets.min(axis=1) / dets.max(axis=1)
 
 
 class ScaledJacobianTest(unittest.TestCase):

@@ -41,6 +41,8 @@ LabelPyramid::LabelPyramid(const LabelImage& image, int depth)
     const auto& below = LevelDimensions[level - 1];
     std::array<int, 3> dims{ (below[0] + 1) / 2, (below[1] + 1) / 2, flat ? 1 : (below[2] + 1) / 2 };
     LevelDimensions[level] = dims;
+    if (level == 1)
+      continue; // summarised from the voxels when asked (VoxelBlock)
     std::vector<LabelSummary>& out = Levels[level];
     out.resize(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
     const int kMax = flat ? 1 : 2;
@@ -58,8 +60,8 @@ LabelPyramid::LabelPyramid(const LabelImage& image, int depth)
                 LabelSummary child;
                 if (ci >= below[0] || cj >= below[1] || ck >= below[2])
                   child = { 0, 0 };
-                else if (level == 1)
-                  child = { image.At(ci, cj, ck), image.At(ci, cj, ck) };
+                else if (level == 2)
+                  child = VoxelBlock(2 * ci, 2 * cj, 2 * ck);
                 else
                   child = Levels[level - 1][(static_cast<std::size_t>(ck) * below[1] + cj) * below[0] + ci];
                 s = first ? child : Merge(s, child);
@@ -70,6 +72,18 @@ LabelPyramid::LabelPyramid(const LabelImage& image, int depth)
   }
 }
 
+LabelSummary LabelPyramid::VoxelBlock(int i, int j, int k) const
+{
+  const int kMax = Image.Dimension() == 2 ? 1 : 2;
+  const std::int32_t l = Image.At(i, j, k);
+  LabelSummary s{ l, l };
+  for (int dk = 0; dk < kMax; ++dk)
+    for (int dj = 0; dj < 2; ++dj)
+      for (int di = 0; di < 2; ++di)
+        s = Merge(s, Image.At(i + di, j + dj, k + dk));
+  return s;
+}
+
 LabelSummary LabelPyramid::Block(int level, int i, int j, int k) const
 {
   if (level == 0)
@@ -77,6 +91,8 @@ LabelSummary LabelPyramid::Block(int level, int i, int j, int k) const
     const std::int32_t l = Image.At(i, j, k);
     return { l, l };
   }
+  if (level == 1 && level < static_cast<int>(Levels.size()))
+    return VoxelBlock(i, j, Image.Dimension() == 2 ? 0 : k);
   if (level >= static_cast<int>(Levels.size()))
     return { LabelSummary::Many, LabelSummary::Many };
   const auto& dims = LevelDimensions[level];

@@ -8,7 +8,10 @@
  * level-l entry summarises the 2^l-voxel block of the image as "one label",
  * "two labels" or "more". Leaves of the octree are exactly such blocks, so the
  * refinement test "at most two materials per leaf" (section 3.1.1) and the
- * uniform-leaf shortcut never visit voxels.
+ * uniform-leaf shortcut never visit voxels. Level 1 (blocks of 2^d voxels)
+ * is not stored but read from the voxels when asked: it would be seven
+ * eighths of the pyramid's memory, 1 byte per voxel (1 GiB at 1024^3), for
+ * 8 reads a query.
  */
 
 #include "Support/LabelImage.h"
@@ -42,6 +45,9 @@ public:
   LabelSummary Block(int level, int i, int j, int k) const;
 
 private:
+  /// Level 1, from the 2^d voxels of the block whose first voxel is (i, j, k).
+  LabelSummary VoxelBlock(int i, int j, int k) const;
+
   const LabelImage& Image;
   std::vector<std::vector<LabelSummary>> Levels; // Levels[l] for l >= 1
   std::vector<std::array<int, 3>> LevelDimensions;

@@ -280,6 +280,8 @@ void StreamAndReport(benchmark::State& state, const LabelImage& image, std::size
   state.counters["cells_in"] = double(counts.CellsBefore);
   state.counters["blocks"] = double(last.Streaming.Blocks);
   state.counters["assembled"] = double(last.Streaming.AssembledCells);
+  state.counters["border_passes"] = double(last.Streaming.BorderPasses);
+  state.counters["max_assembled"] = double(last.Streaming.LargestAssembledCells);
   state.counters["cells_out"] = double(counts.CellsAfter);
   state.counters["fg_out"] = double(foregroundAfter);
   state.counters["cells/s"] = double(counts.CellsBefore) / seconds;

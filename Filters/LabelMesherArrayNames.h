@@ -79,6 +79,8 @@ inline constexpr char FrozenVertices[] = "FrozenVertices";
 inline constexpr char Blocks[] = "Blocks";                       ///< blocks the run was cut into
 inline constexpr char LargestBlockCells[] = "LargestBlockCells"; ///< initial cells of the largest block
 inline constexpr char AssembledCells[] = "AssembledCells";       ///< cells entering the last pass (0: one block)
+inline constexpr char BorderPasses[] = "BorderPasses";           ///< border passes between blocks
+inline constexpr char LargestAssembledCells[] = "LargestAssembledCells"; ///< most cells of the assembled blocks
 
 // ---- field data: vtkBezierCurver ----
 inline constexpr char Smoothness[] = "Smoothness";

@@ -336,6 +336,9 @@ bool vtkLabelMesher::MeshAndDecimate(
   labelmesher::AddScalarField(fd, arrays::Blocks, static_cast<double>(result.Streaming.Blocks));
   labelmesher::AddScalarField(fd, arrays::LargestBlockCells, static_cast<double>(result.Streaming.LargestBlockCells));
   labelmesher::AddScalarField(fd, arrays::AssembledCells, static_cast<double>(result.Streaming.AssembledCells));
+  labelmesher::AddScalarField(fd, arrays::BorderPasses, static_cast<double>(result.Streaming.BorderPasses));
+  labelmesher::AddScalarField(
+    fd, arrays::LargestAssembledCells, static_cast<double>(result.Streaming.LargestAssembledCells));
   labelmesher::PassMaterialTable(input->GetFieldData(), fd);
   labelmesher::PassMaterialTable(input->GetFieldData(), boundary->GetFieldData());
   if (this->MeasureOutput)

@@ -40,8 +40,10 @@
  * IncludeBackground, VoxelSize, CellsBefore, CellsAfter, Merges, MergeOffers,
  * MergesRejectedBy*, VerticesRelocated, FrozenVertices, measurements when
  * MeasureOutput is on), the mesher's NumberOfLeaves, EstimatedMemory and
- * InterfaceFaces, and Blocks, LargestBlockCells and AssembledCells (cells that
- * entered the last pass); StageName / StageSeconds. Without decimation, the
+ * InterfaceFaces, and Blocks, LargestBlockCells, AssembledCells (cells that
+ * entered the last pass), BorderPasses (passes over the blocks so far, between
+ * blocks) and LargestAssembledCells (the most cells those passes or the last
+ * one held); StageName / StageSeconds. Without decimation, the
  * mesher's field data. Output port 1, vtkPolyData: the linear mesh's
  * interfaces with `Materials`. Output port 2, vtkUnstructuredGrid: with Curve,
  * vtkBezierCurver's output (VTK_BEZIER_TRIANGLE cells and its field data);

@@ -143,6 +143,8 @@ RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructu
     d.Blocks = FieldCount(fd, arrays::Blocks);
     d.LargestBlockCells = FieldCount(fd, arrays::LargestBlockCells);
     d.AssembledCells = FieldCount(fd, arrays::AssembledCells);
+    d.BorderPasses = FieldCount(fd, arrays::BorderPasses);
+    d.LargestAssembledCells = FieldCount(fd, arrays::LargestAssembledCells);
     r.Decimation = d;
   }
   return r;
@@ -228,7 +230,8 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     if (d.Blocks > 1)
     {
       out << "Streamed in " << d.Blocks << " blocks (largest " << d.LargestBlockCells << " initial " << cellName
-          << "); last pass over " << d.AssembledCells << " " << cellName << "\n";
+          << "); " << d.BorderPasses << " border passes, at most " << d.LargestAssembledCells << " " << cellName
+          << " assembled; last pass over " << d.AssembledCells << " " << cellName << "\n";
     }
   }
   else
@@ -308,6 +311,8 @@ void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonW
   j.Key("blocks").Integer(d.Blocks);
   j.Key("largest_block_cells").Integer(d.LargestBlockCells);
   j.Key("assembled_cells").Integer(d.AssembledCells);
+  j.Key("border_passes").Integer(d.BorderPasses);
+  j.Key("largest_assembled_cells").Integer(d.LargestAssembledCells);
   j.EndObject();
 }
 

@@ -50,8 +50,9 @@ struct DecimationEntry
   long long CellsBefore = 0, CellsAfter = 0, Merges = 0, Offers = 0;
   long long RejectedByQuality = 0, RejectedByTopology = 0, RejectedByFidelity = 0, FrozenVertices = 0;
   long long Relocations = 0; ///< interior vertices moved between rounds of merges
-  /// Streamed (vtkLabelMesher): blocks, initial cells of the largest, cells entering the last pass.
-  long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0;
+  /// Streamed (vtkLabelMesher): blocks, initial cells of the largest, cells entering the last pass,
+  /// border passes between blocks, the most cells the assembled blocks held.
+  long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0, BorderPasses = 0, LargestAssembledCells = 0;
 };
 
 struct RunReport

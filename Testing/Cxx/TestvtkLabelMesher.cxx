@@ -115,6 +115,8 @@ TEST(vtkLabelMesher, MeshesAndDecimatesWithItsArraysAndFieldData)
   EXPECT_GE(FieldScalar(out, arrays::Blocks), 3.0) << "the image crosses block borders";
   EXPECT_LE(FieldScalar(out, arrays::LargestBlockCells), 3000.0 + 200.0) << "a block closes once it holds 3000 cells";
   EXPECT_GT(FieldScalar(out, arrays::AssembledCells), 0.0);
+  EXPECT_GT(FieldScalar(out, arrays::BorderPasses), 0.0) << "the blocks so far are resolved between blocks";
+  EXPECT_GE(FieldScalar(out, arrays::LargestAssembledCells), FieldScalar(out, arrays::AssembledCells));
   EXPECT_GT(FieldScalar(out, arrays::NumberOfLeaves), 0.0);
   EXPECT_GT(FieldScalar(out, arrays::InterfaceFaces), 0.0);
   EXPECT_GT(FieldScalar(out, arrays::EstimatedMemory), 0.0);

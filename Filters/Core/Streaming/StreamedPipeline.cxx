@@ -112,6 +112,50 @@ private:
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> Bins;
 };
 
+/// After a run's certificates: the selected image faces it certified are
+/// settled (a later block need not select them), and the neighbourhoods of
+/// those it could not certify are returned, binned, for freezing (none when
+/// `freeze` is off, which is unsound: tests only).
+BoxBinsByVoxel SettleCertified(const std::vector<VoxelBox>& near, const std::vector<std::uint8_t>& selected,
+  const std::vector<std::uint8_t>& uncertified, bool freeze, std::vector<std::uint8_t>& settled)
+{
+  BoxBinsByVoxel around(near);
+  for (std::size_t f = 0; f < near.size(); ++f)
+  {
+    if (selected[f])
+      settled[f] = !uncertified[f];
+    if (uncertified[f] && freeze)
+      around.Add(static_cast<std::uint32_t>(f));
+  }
+  return around;
+}
+
+/// Freezes (in `frozen`) the vertices of every alive cell of `mesh` among
+/// [begin, end) whose box meets a box of `around`.
+void FreezeCellsNear(const EditableMesh& mesh, const BoxBinsByVoxel& around, std::size_t begin, std::size_t end,
+  int depth, std::vector<std::uint8_t>& frozen)
+{
+  const int nv = mesh.VerticesPerCell();
+  for (std::size_t c = begin; c < end; ++c)
+  {
+    if (!mesh.CellAlive[c])
+      continue;
+    std::array<double, 3> lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = hi[a] = mesh.Position[mesh.Cells[c][0]][a] / 2.0;
+      for (int k = 1; k < nv; ++k)
+      {
+        lo[a] = std::min(lo[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
+        hi[a] = std::max(hi[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
+      }
+    }
+    if (around.Meets(GrownVoxelBox(lo, hi, 0.0, mesh.Dimension, depth)))
+      for (int k = 0; k < nv; ++k)
+        frozen[static_cast<std::size_t>(mesh.Cells[c][k])] = 1;
+  }
+}
+
 /// The decimated blocks joined into one mesh: border vertices, which every
 /// block sharing them kept in place, become one vertex by their position.
 class BlockAssembly
@@ -193,6 +237,44 @@ void AddMergeCounts(DecimationCounts& total, const DecimationCounts& part)
   total.Relocations += part.Relocations;
 }
 
+/// A border pass: decimates the assembled blocks, which cover the Morton keys
+/// `keys` (a prefix of the octree), from the vertices they froze, with the
+/// frontier (faces towards leaves not filled yet) frozen. It certifies every
+/// image face whose neighbourhood meets `keys` (settled ones too: its merges
+/// may touch their certificates) and freezes every cell near those it cannot
+/// (their neighbourhoods cross the frontier), as a block does. No relocation:
+/// the last pass relocates every vertex. The assembly is replaced by the
+/// result, with what this pass froze offered again later.
+void DecimateAssembled(const LabelImage& image, const ImageBoundary& boundary, const std::vector<VoxelBox>& near,
+  const KeyRange& keys, const DecimationParameters& decimation, bool freezeNearBorders, int depth,
+  std::vector<std::uint8_t>& settled, BlockAssembly& assembly, const ProgressObserver& observer, double at,
+  DecimationCounts& counts, StageClock& clock)
+{
+  const int dimension = assembly.Mesh.Dimension;
+  std::vector<std::uint8_t> selected(near.size(), 0);
+  for (std::size_t f = 0; f < near.size(); ++f)
+    selected[f] = keys.MayMeet(near[f]);
+  DecimationScope scope;
+  scope.ImageFaces = &selected;
+  scope.Offered = std::move(assembly.Offered);
+  scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
+                       std::vector<std::uint8_t>& frozen) {
+    const BoxBinsByVoxel around = SettleCertified(near, selected, uncertified, freezeNearBorders, settled);
+    if (!around.Empty())
+      FreezeCellsNear(mesh, around, 0, mesh.Cells.size(), depth, frozen);
+  };
+  const std::int32_t extent = 2 * (std::int32_t(1) << depth);
+  EditableMesh mesh(std::move(assembly.Mesh), Lattice{ -1, -1, dimension == 2 ? 0 : -1 },
+    Lattice{ extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 });
+  assembly = BlockAssembly(dimension);
+  DecimationParameters mergesOnly = decimation;
+  mergesOnly.RelocateInteriorVertices = false;
+  DecimationCounts passCounts;
+  DecimateInScope(image, boundary, mesh, mergesOnly, scope, observer, at, 0.0, passCounts, clock);
+  AddMergeCounts(counts, passCounts);
+  assembly.Add(mesh, scope.Frozen);
+}
+
 } // namespace
 
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
@@ -226,6 +308,8 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   clock.Finish("block plan");
 
   BlockAssembly assembly(dimension);
+  const std::size_t minimumBorderPass = std::max<std::size_t>(1, streaming.BlockCells / 4);
+  std::size_t nextBorderPass = minimumBorderPass;
   // Per image face: certified by a finished block (its certificate lies in
   // cells no later block changes), or selected for the block under way.
   std::vector<std::uint8_t> settled(near.size(), 0), selected(near.size(), 0);
@@ -262,14 +346,8 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
     scope.ImageFaces = &selected;
     scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
                          std::vector<std::uint8_t>& frozen) {
-      BoxBinsByVoxel around(near);
-      for (std::size_t f = 0; f < near.size(); ++f)
-      {
-        if (selected[f])
-          settled[f] = !uncertified[f];
-        if (uncertified[f] && streaming.FreezeNearBorders)
-          around.Add(static_cast<std::uint32_t>(f));
-      }
+      const BoxBinsByVoxel around =
+        SettleCertified(near, selected, uncertified, streaming.FreezeNearBorders, settled);
       if (around.Empty())
         return;
       // Every cell near such a face stays as it is, so that whatever certified
@@ -281,25 +359,10 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       // the cells of leaves near such a face are tested, each by its own box
       // (a cell whose box misses the face's neighbourhood holds no mesh face
       // within h(I,M) of it).
-      const int nv = mesh.VerticesPerCell();
       for (std::size_t i = first; i < last; ++i)
         if (around.Meets(leaves[i].Box))
-          for (std::size_t c = i == first ? 0 : cellEnd[i - first - 1]; c < cellEnd[i - first]; ++c)
-          {
-            std::array<double, 3> lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
-            for (int a = 0; a < 3; ++a)
-            {
-              lo[a] = hi[a] = mesh.Position[mesh.Cells[c][0]][a] / 2.0;
-              for (int k = 1; k < nv; ++k)
-              {
-                lo[a] = std::min(lo[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
-                hi[a] = std::max(hi[a], mesh.Position[mesh.Cells[c][k]][a] / 2.0);
-              }
-            }
-            if (around.Meets(GrownVoxelBox(lo, hi, 0.0, dimension, octree.Depth)))
-              for (int k = 0; k < nv; ++k)
-                frozen[static_cast<std::size_t>(mesh.Cells[c][k])] = 1;
-          }
+          FreezeCellsNear(mesh, around, i == first ? 0 : cellEnd[i - first - 1], cellEnd[i - first], octree.Depth,
+            frozen);
     };
     if (whole)
       scope.FreezeNear = nullptr; // one block certifies every image face, or the input is wrong
@@ -320,11 +383,31 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
     // scope.Frozen now holds every vertex the block froze, its border's included.
     assembly.Add(block, scope.Frozen);
     first = last;
+    if (first < leaves.size() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
+    {
+      // The blocks so far cover the keys [0, End): what they froze at the
+      // borders between them can be resolved now, so that the assembled mesh
+      // is the output so far and one frontier, not every block's border zone.
+      // Doubling the threshold each time keeps the passes' total work within
+      // about twice the last pass's.
+      const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
+      const std::size_t passFrom = timings.size();
+      DecimateAssembled(image, boundary, near, LeafRunKeys(leaves, 0, first, dimension, octree.Depth),
+        decimation, streaming.FreezeNearBorders, octree.Depth, settled, assembly, observer, at, out.Counts, clock);
+      for (std::size_t t = passFrom; t < timings.size(); ++t)
+        timings[t].Stage = "border passes: " + timings[t].Stage;
+      ++result.Streaming.BorderPasses;
+      result.Streaming.LargestAssembledCells =
+        std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
+      nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
+    }
   }
 
   // The assembled mesh, once more from what the blocks froze: its setup
   // re-checks every bound on the whole mesh before any merge.
   result.Streaming.AssembledCells = assembly.Mesh.NumberOfCells();
+  result.Streaming.LargestAssembledCells =
+    std::max(result.Streaming.LargestAssembledCells, result.Streaming.AssembledCells);
   result.Streaming.MergesInBlocks = out.Counts.Merges;
   DecimationScope last;
   last.Offered = std::move(assembly.Offered);

@@ -10,8 +10,11 @@
  * cells (runs of p4est's order: the unit an MPI rank would take), and each
  * block is filled (Algorithm 3), decimated with its border frozen (Algorithm
  * 4, DecimationScope.h) and released; what is left of it joins the output.
- * Last, the assembled mesh is decimated once more from the vertices the
- * blocks froze. Peak memory is the output plus one block, not the initial mesh.
+ * Whenever the assembled blocks have grown enough, a border pass decimates
+ * them from the vertices they froze at the borders between them, with the
+ * frontier towards the leaves still to come frozen; last, the whole assembled
+ * mesh is decimated once more. Peak memory is the output plus one block and
+ * one frontier, not the initial mesh.
  *
  * Why every guarantee holds (the checks of each merge are today's, on a
  * piece of the mesh):
@@ -25,6 +28,9 @@
  *    image face, every cell of the block that comes near it is frozen, so
  *    the mesh faces within h(I,M) of it stay the initial mesh's until the
  *    last pass (a merge only rebuilds its vertex's star, inside the star);
+ *  - a border pass is a block whose keys are those of all blocks so far: it
+ *    re-checks the assembled mesh (angles, h(M,I) of every face) and
+ *    certifies every image face near it, settled or not, before merging;
  *  - the last pass re-checks the assembled mesh from scratch (angles, h(M,I)
  *    of every face, a certificate for every image face) before merging.
  * One block gives exactly DecimateMesh(MeshLabelImage(...)). The blocks
@@ -50,6 +56,11 @@ struct StreamingParameters
   /// A block is closed once its leaves made this many initial cells (0: one
   /// block, the whole mesh at once).
   std::size_t BlockCells = kDefaultBlockCells;
+  /// Border passes: once the assembled blocks hold a quarter of BlockCells
+  /// cells and twice as many as after the previous border pass, they are
+  /// decimated from what they froze at the borders between them. Off, only
+  /// the last pass does that (all borders held until the end).
+  bool BorderPasses = true;
   /// For tests only: off, nothing is frozen near image faces that cross a
   /// block border (unsound), to show that the tests catch it.
   bool FreezeNearBorders = true;
@@ -62,6 +73,8 @@ struct StreamingCounts
   std::size_t LargestBlockCells = 0;  ///< initial cells of the largest block
   std::size_t ForegroundCellsBefore = 0; ///< initial cells of a label other than 0
   std::size_t AssembledCells = 0;     ///< cells entering the last pass (0: one block, no last pass)
+  std::size_t BorderPasses = 0;       ///< border passes run between blocks
+  std::size_t LargestAssembledCells = 0; ///< the most cells the assembled blocks held (a border pass's or the last pass's input)
   std::size_t MergesInBlocks = 0;     ///< merges done in the blocks (the rest: in the last pass)
 };
 

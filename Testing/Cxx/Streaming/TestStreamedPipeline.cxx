@@ -89,7 +89,7 @@ testing::RandomLabelImage Generate(const std::string& family, std::uint64_t seed
 TEST_P(StreamedGuarantees, EveryGuaranteeHoldsAcrossManyBlocks)
 {
   const Family family = GetParam();
-  std::size_t blocks = 0, images = 0, before = 0, after = 0, mergesInBlocks = 0;
+  std::size_t blocks = 0, images = 0, before = 0, after = 0, mergesInBlocks = 0, borderPasses = 0;
   for (int i = 0; i < family.Images; ++i)
   {
     const std::uint64_t seed = family.FirstSeed + static_cast<std::uint64_t>(i);
@@ -111,14 +111,16 @@ TEST_P(StreamedGuarantees, EveryGuaranteeHoldsAcrossManyBlocks)
                                   << random.Describe();
     blocks += streamed.Blocks;
     mergesInBlocks += streamed.MergesInBlocks;
+    borderPasses += streamed.BorderPasses;
     ++images;
     before += counts.CellsBefore;
     after += counts.CellsAfter;
   }
   // Many borders per image, merges in the blocks as well as in the last
-  // pass, and still a decimation.
+  // pass, border passes between blocks, and still a decimation.
   EXPECT_GE(blocks, static_cast<std::size_t>(family.MinimumBlocks) * images);
   EXPECT_GT(mergesInBlocks, 0u);
+  EXPECT_GT(borderPasses, 0u);
   EXPECT_LT(after * 2, before);
 }
 
@@ -172,6 +174,36 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
     EXPECT_TRUE(SameMesh(reference.Decimated.Mesh, other.Decimated.Mesh)) << threads << " threads";
   }
   SetThreadLimit(0);
+}
+
+TEST(StreamedPipeline, BorderPassesKeepTheAssembledBlocksSmall)
+{
+  // Without border passes every block's border zone waits for the last
+  // pass; with them the assembled blocks are resolved as they grow, so the
+  // most cells they hold at once is smaller, and every guarantee still holds.
+  std::size_t with = 0, without = 0, passes = 0;
+  for (std::uint64_t seed = 918000; seed < 918006; ++seed)
+  {
+    const auto random = testing::GenerateRandomLabelImageWithDescription(seed, 3);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, 3, mesher);
+    StreamingParameters streaming;
+    streaming.BlockCells = 400;
+    StreamingCounts on, off;
+    auto problems = testing::ViolatedStreamedGuarantees(random.Image, mesher, decimation, streaming, nullptr, &on);
+    EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << (problems.empty() ? "" : problems.front());
+    streaming.BorderPasses = false;
+    problems = testing::ViolatedStreamedGuarantees(random.Image, mesher, decimation, streaming, nullptr, &off);
+    EXPECT_TRUE(problems.empty()) << "seed " << seed << ", no border passes: " << (problems.empty() ? "" : problems.front());
+    EXPECT_EQ(off.BorderPasses, 0u);
+    EXPECT_EQ(off.LargestAssembledCells, off.AssembledCells);
+    EXPECT_GE(on.LargestAssembledCells, on.AssembledCells);
+    passes += on.BorderPasses;
+    with += on.LargestAssembledCells;
+    without += off.LargestAssembledCells;
+  }
+  EXPECT_GT(passes, 6u);
+  EXPECT_LT(with, without);
 }
 
 TEST(BlockPlan, ABoxLiesInARunOfLeavesExactlyWhenItsCornerKeysDo)

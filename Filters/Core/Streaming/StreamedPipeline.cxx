@@ -10,6 +10,10 @@
 #include "LabelOctreeMesher.h"
 #include "Streaming/BlockPlan.h"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
@@ -227,6 +231,16 @@ std::vector<StageTiming> Coalesced(const std::vector<StageTiming>& timings)
   return total;
 }
 
+/// Hands the heap's free pages back to the system once a block is released:
+/// glibc keeps them otherwise, and the next block's arrays, of other sizes,
+/// do not fit the holes, so the resident size ratchets up block after block.
+void ReleaseFreedMemory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 void AddMergeCounts(DecimationCounts& total, const DecimationCounts& part)
 {
   total.Offers += part.Offers;
@@ -316,6 +330,7 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   const double blocksStart = 0.15, blocksShare = 0.7;
   for (std::size_t first = 0; first < leaves.size();)
   {
+    ReleaseFreedMemory(); // the previous block's and border pass's
     // Fill leaves until the block holds BlockCells cells.
     const double start = blocksStart + blocksShare * double(first) / double(leaves.size());
     if (!observer.Report("fill", start))
@@ -409,6 +424,7 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   result.Streaming.LargestAssembledCells =
     std::max(result.Streaming.LargestAssembledCells, result.Streaming.AssembledCells);
   result.Streaming.MergesInBlocks = out.Counts.Merges;
+  ReleaseFreedMemory();
   DecimationScope last;
   last.Offered = std::move(assembly.Offered);
   EditableMesh mesh(std::move(assembly.Mesh));

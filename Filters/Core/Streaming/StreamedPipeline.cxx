@@ -10,14 +10,14 @@
 #include "LabelOctreeMesher.h"
 #include "Streaming/BlockPlan.h"
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
+
+#if defined(__GLIBC__) // defined by <features.h>, which the standard headers above include
+#include <malloc.h>
+#endif
 
 namespace labelmesher
 {
@@ -403,8 +403,11 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       // The blocks so far cover the keys [0, End): what they froze at the
       // borders between them can be resolved now, so that the assembled mesh
       // is the output so far and one frontier, not every block's border zone.
-      // Doubling the threshold each time keeps the passes' total work within
-      // about twice the last pass's.
+      // Doubling the threshold each time keeps the passes' merges within
+      // about twice the last pass's; each pass also re-certifies the image
+      // faces of all blocks so far (Cassini 1024: 7 passes, 71 of 577 s).
+      result.Streaming.LargestAssembledCells =
+        std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
       const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
       const std::size_t passFrom = timings.size();
       DecimateAssembled(image, boundary, near, LeafRunKeys(leaves, 0, first, dimension, octree.Depth),
@@ -412,8 +415,6 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
       for (std::size_t t = passFrom; t < timings.size(); ++t)
         timings[t].Stage = "border passes: " + timings[t].Stage;
       ++result.Streaming.BorderPasses;
-      result.Streaming.LargestAssembledCells =
-        std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
       nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
     }
   }

@@ -75,7 +75,7 @@ struct StreamingCounts
   std::size_t AssembledCells = 0;     ///< cells entering the last pass (0: one block, no last pass)
   std::size_t BorderPasses = 0;       ///< border passes run between blocks
   std::size_t LargestAssembledCells = 0; ///< the most cells the assembled blocks held (a border pass's or the last pass's input)
-  std::size_t MergesInBlocks = 0;     ///< merges done in the blocks (the rest: in the last pass)
+  std::size_t MergesInBlocks = 0;     ///< merges done before the last pass (in the blocks and the border passes)
 };
 
 struct StreamedResult

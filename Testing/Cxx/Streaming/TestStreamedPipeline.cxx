@@ -167,6 +167,7 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
   SetThreadLimit(1);
   const StreamedResult reference = MeshAndDecimate(random.Image, mesher, decimation, blocks);
   ASSERT_GT(reference.Streaming.Blocks, 2u);
+  ASSERT_GT(reference.Streaming.BorderPasses, 0u);
   for (unsigned threads : { 2u, 3u, 8u })
   {
     SetThreadLimit(threads);

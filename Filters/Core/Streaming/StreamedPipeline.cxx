@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
@@ -251,6 +252,26 @@ void AddMergeCounts(DecimationCounts& total, const DecimationCounts& part)
   total.Relocations += part.Relocations;
 }
 
+/// What every pass over a piece of the mesh shares: the image, its boundary
+/// and every face's neighbourhood, the octree's depth and the whole box (on
+/// the doubled lattice).
+struct PieceContext
+{
+  const LabelImage& Image;
+  const ImageBoundary& Boundary;
+  const std::vector<VoxelBox>& Near;
+  int Depth;
+  Lattice BoxLow, BoxHigh;
+  bool FreezeNearBorders;
+};
+
+/// Renames the stage times from index `from` on as `prefix` + their name.
+void PrefixStages(std::vector<StageTiming>& timings, std::size_t from, const std::string& prefix)
+{
+  for (std::size_t t = from; t < timings.size(); ++t)
+    timings[t].Stage = prefix + timings[t].Stage;
+}
+
 /// A border pass: decimates the assembled blocks, which cover the Morton keys
 /// `keys` (a prefix of the octree), from the vertices they froze, with the
 /// frontier (faces towards leaves not filled yet) frozen. It certifies every
@@ -259,12 +280,11 @@ void AddMergeCounts(DecimationCounts& total, const DecimationCounts& part)
 /// (their neighbourhoods cross the frontier), as a block does. No relocation:
 /// the last pass relocates every vertex. The assembly is replaced by the
 /// result, with what this pass froze offered again later.
-void DecimateAssembled(const LabelImage& image, const ImageBoundary& boundary, const std::vector<VoxelBox>& near,
-  const KeyRange& keys, const DecimationParameters& decimation, bool freezeNearBorders, int depth,
+void DecimateAssembled(const PieceContext& context, const KeyRange& keys, const DecimationParameters& decimation,
   std::vector<std::uint8_t>& settled, BlockAssembly& assembly, const ProgressObserver& observer, double at,
   DecimationCounts& counts, StageClock& clock)
 {
-  const int dimension = assembly.Mesh.Dimension;
+  const std::vector<VoxelBox>& near = context.Near;
   std::vector<std::uint8_t> selected(near.size(), 0);
   for (std::size_t f = 0; f < near.size(); ++f)
     selected[f] = keys.MayMeet(near[f]);
@@ -273,18 +293,16 @@ void DecimateAssembled(const LabelImage& image, const ImageBoundary& boundary, c
   scope.Offered = std::move(assembly.Offered);
   scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
                        std::vector<std::uint8_t>& frozen) {
-    const BoxBinsByVoxel around = SettleCertified(near, selected, uncertified, freezeNearBorders, settled);
+    const BoxBinsByVoxel around = SettleCertified(near, selected, uncertified, context.FreezeNearBorders, settled);
     if (!around.Empty())
-      FreezeCellsNear(mesh, around, 0, mesh.Cells.size(), depth, frozen);
+      FreezeCellsNear(mesh, around, 0, mesh.Cells.size(), context.Depth, frozen);
   };
-  const std::int32_t extent = 2 * (std::int32_t(1) << depth);
-  EditableMesh mesh(std::move(assembly.Mesh), Lattice{ -1, -1, dimension == 2 ? 0 : -1 },
-    Lattice{ extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 });
-  assembly = BlockAssembly(dimension);
+  EditableMesh mesh(std::move(assembly.Mesh), context.BoxLow, context.BoxHigh);
+  assembly = BlockAssembly(mesh.Dimension);
   DecimationParameters mergesOnly = decimation;
   mergesOnly.RelocateInteriorVertices = false;
   DecimationCounts passCounts;
-  DecimateInScope(image, boundary, mesh, mergesOnly, scope, observer, at, 0.0, passCounts, clock);
+  DecimateInScope(context.Image, context.Boundary, mesh, mergesOnly, scope, observer, at, 0.0, passCounts, clock);
   AddMergeCounts(counts, passCounts);
   assembly.Add(mesh, scope.Frozen);
 }
@@ -319,6 +337,7 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   const std::int32_t extent = 2 * (std::int32_t(1) << octree.Depth);
   const Lattice boxLow{ -1, -1, dimension == 2 ? 0 : -1 };
   const Lattice boxHigh{ extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 };
+  const PieceContext pieces{ image, boundary, near, octree.Depth, boxLow, boxHigh, streaming.FreezeNearBorders };
   clock.Finish("block plan");
 
   BlockAssembly assembly(dimension);
@@ -410,10 +429,9 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
         std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
       const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
       const std::size_t passFrom = timings.size();
-      DecimateAssembled(image, boundary, near, LeafRunKeys(leaves, 0, first, dimension, octree.Depth),
-        decimation, streaming.FreezeNearBorders, octree.Depth, settled, assembly, observer, at, out.Counts, clock);
-      for (std::size_t t = passFrom; t < timings.size(); ++t)
-        timings[t].Stage = "border passes: " + timings[t].Stage;
+      DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, octree.Depth), decimation, settled,
+        assembly, observer, at, out.Counts, clock);
+      PrefixStages(timings, passFrom, "border passes: ");
       ++result.Streaming.BorderPasses;
       nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
     }
@@ -432,8 +450,7 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   DecimationCounts lastCounts;
   const std::size_t lastFrom = timings.size();
   DecimateInScope(image, boundary, mesh, decimation, last, observer, 0.85, 0.1, lastCounts, clock);
-  for (std::size_t t = lastFrom; t < timings.size(); ++t)
-    timings[t].Stage = "last pass: " + timings[t].Stage;
+  PrefixStages(timings, lastFrom, "last pass: ");
   AddMergeCounts(out.Counts, lastCounts);
   if (!observer.Report("decimation output", 0.95))
     throw AbortRequested{};

@@ -177,8 +177,10 @@ CGALMeshResult MeshWithCGAL(const LabelImage& image, const CGALMeshOptions& opti
   if (image.Dimension() != 3)
     throw std::invalid_argument("MeshWithCGAL: 3D images only (CGAL Mesh_3)");
   std::int32_t maxLabel = 0;
-  for (auto l : image.Labels)
-    maxLabel = std::max(maxLabel, l);
+  image.WithLabels([&](const auto* labels) {
+    for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+      maxLabel = std::max<std::int32_t>(maxLabel, labels[v]);
+  });
   if (maxLabel <= 255)
     return Mesh<unsigned char>(image, options);
   if (maxLabel <= 65535)

@@ -225,8 +225,10 @@ int main(int argc, char** argv)
   }
 
   std::map<std::int32_t, std::size_t> voxelsPerLabel;
-  for (auto l : image.Labels)
-    ++voxelsPerLabel[l];
+  image.WithLabels([&](const auto* labels) {
+    for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+      ++voxelsPerLabel[labels[v]];
+  });
   std::printf("input %s: %d x %d x %d voxels, %zu labels besides 0\n", name.c_str(), image.Dimensions[0],
     image.Dimensions[1], image.Dimensions[2], voxelsPerLabel.size() - (voxelsPerLabel.count(0) ? 1 : 0));
   if (decimate)

@@ -79,7 +79,7 @@ namespace
 // ---- pass 1: gather -------------------------------------------------------
 struct GatherLabels
 {
-  std::vector<std::int32_t>& Labels;
+  LabelImage& Labels; ///< the values in the input's order, as narrow as they allow
   std::string Error;
   bool HasForeground = false;
 
@@ -87,7 +87,6 @@ struct GatherLabels
   void operator()(ArrayT* array)
   {
     const auto values = vtk::DataArrayValueRange<1>(array);
-    Labels.resize(static_cast<std::size_t>(values.size()));
     std::size_t n = 0;
     for (const auto v : values)
     {
@@ -96,14 +95,13 @@ struct GatherLabels
       {
         return;
       }
-      Labels[n++] = static_cast<std::int32_t>(v);
+      Labels.SetLabel(n++, static_cast<std::int32_t>(v));
     }
   }
 
   // Values of types the dispatcher does not cover (e.g. implicit arrays).
   void Fallback(vtkDataArray* array)
   {
-    Labels.resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
     for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
     {
       const double value = array->GetComponent(t, 0);
@@ -111,7 +109,7 @@ struct GatherLabels
       {
         return;
       }
-      Labels[static_cast<std::size_t>(t)] = static_cast<std::int32_t>(value);
+      Labels.SetLabel(static_cast<std::size_t>(t), static_cast<std::int32_t>(value));
     }
   }
 
@@ -162,7 +160,7 @@ namespace
 /// Builds the LabelImage (x fastest) from the gathered labels of an image with
 /// point dimensions `dims`, permuting a single-slice image into the x-y plane and
 /// resampling to isotropic voxels of the smallest (in-plane) spacing.
-LabelImage PlaceLabels(const std::vector<std::int32_t>& labels, const int dims[3],
+LabelImage PlaceLabels(LabelImage&& labels, const int dims[3],
   const int extent[6], const double spacing[3], ImagePlacement& placement)
 {
   // 2D when one axis has a single slice; the last such axis is the normal.
@@ -229,7 +227,16 @@ LabelImage PlaceLabels(const std::vector<std::int32_t>& labels, const int dims[3
     }
   }
 
-  LabelImage image(newDims[0], newDims[1], newDims[2]);
+  bool identity = true; // neither permuted nor resampled: the gathered labels are the image
+  for (int a = 0; a < 3; ++a)
+  {
+    identity = identity && placement.ImageAxis[a] == a && newDims[a] == dims[a];
+    for (int i = 0; identity && i < newDims[a]; ++i)
+      identity = source[a][i] == i;
+  }
+  if (identity)
+    return std::move(labels);
+  LabelImage image(newDims[0], newDims[1], newDims[2], labels.BytesPerLabel());
   const std::size_t stride[3] = { 1, static_cast<std::size_t>(dims[0]),
     static_cast<std::size_t>(dims[0]) * dims[1] };
   const std::size_t sx = stride[placement.ImageAxis[0]];
@@ -243,7 +250,7 @@ LabelImage PlaceLabels(const std::vector<std::int32_t>& labels, const int dims[3
       const std::size_t row = source[2][k] * sz + source[1][j] * sy;
       for (int i = 0; i < newDims[0]; ++i)
       {
-        image.Labels[out++] = labels[row + source[0][i] * sx];
+        image.SetLabel(out++, labels.Label(row + source[0][i] * sx));
       }
     }
   }
@@ -302,7 +309,7 @@ bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& i
     }
   }
 
-  std::vector<std::int32_t> labels;
+  LabelImage labels(dims[0], dims[1], dims[2]); // widened as the values ask
   GatherLabels gather{ labels, {} };
   if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Integrals>::Execute(
         scalars, gather))
@@ -335,7 +342,7 @@ bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& i
   input->GetOrigin(placement.Origin);
   std::copy(input->GetDirectionMatrix()->GetData(), input->GetDirectionMatrix()->GetData() + 9,
     placement.Direction);
-  image = PlaceLabels(labels, dims, extent, spacing, placement);
+  image = PlaceLabels(std::move(labels), dims, extent, spacing, placement);
   return true;
 }
 

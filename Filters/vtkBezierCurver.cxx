@@ -95,7 +95,8 @@ void AddAccuracy(vtkFieldData* fd, const labelmesher::PixelAccuracy& linear,
   AddScalarField(fd, arrays::Pixels, static_cast<double>(linear.Pixels));
   AddScalarField(fd, arrays::MisclassifiedPixelsLinear, static_cast<double>(linear.Misclassified));
   AddScalarField(fd, arrays::MisclassifiedPixelsCurved, static_cast<double>(curved.Misclassified));
-  std::set<std::int32_t> labels(image.Labels.begin(), image.Labels.end());
+  std::set<std::int32_t> labels;
+  image.WithLabels([&](const auto* values) { labels.insert(values, values + image.NumberOfVoxels()); });
   labels.erase(0);
   std::vector<double> material, missedLinear, missedCurved, claimedLinear, claimedCurved;
   auto count = [](const std::map<std::int32_t, std::size_t>& m, std::int32_t label) {

@@ -115,7 +115,7 @@ class vtkFieldData;
 class vtkPolyData;
 namespace labelmesher
 {
-struct LabelImage;
+class LabelImage;
 struct SimplexMesh;
 struct StageTiming;
 }

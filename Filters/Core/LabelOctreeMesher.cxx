@@ -36,17 +36,20 @@ void Validate(const LabelImage& image, const MesherParameters& parameters)
   for (int d = 0; d < 3; ++d)
     if (image.Dimensions[d] <= 0)
       throw std::invalid_argument("the image has an empty extent");
-  if (image.Labels.size() != static_cast<std::size_t>(image.Dimensions[0]) * image.Dimensions[1] * image.Dimensions[2])
+  if (image.NumberOfVoxels() != static_cast<std::size_t>(image.Dimensions[0]) * image.Dimensions[1] * image.Dimensions[2])
     throw std::invalid_argument("the label buffer does not match the image dimensions");
   if (!(parameters.ImageToMeshDistance >= 0.0) || !(parameters.MeshToImageDistance >= 0.0))
     throw std::invalid_argument("Hausdorff distance bounds must be non-negative numbers");
-  bool foreground = false;
-  for (std::int32_t label : image.Labels)
-  {
-    if (label < 0)
-      throw std::invalid_argument("the image has negative labels");
-    foreground = foreground || label != 0;
-  }
+  bool negative = false, foreground = false;
+  image.WithLabels([&](const auto* labels) {
+    for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+    {
+      negative = negative || labels[v] < 0;
+      foreground = foreground || labels[v] != 0;
+    }
+  });
+  if (negative)
+    throw std::invalid_argument("the image has negative labels");
   if (!foreground)
     throw std::invalid_argument("the image has no foreground (every label is 0)");
 }

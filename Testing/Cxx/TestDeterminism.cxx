@@ -168,7 +168,8 @@ void ExpectThreadCountDoesNotMatter(const LabelImage& image, const MesherParamet
 /// says of each file, a check of the reader.
 std::pair<std::size_t, std::int32_t> LabelsOf(const LabelImage& image)
 {
-  std::set<std::int32_t> labels(image.Labels.begin(), image.Labels.end());
+  const std::vector<std::int32_t> all = image.LabelsAsInt32();
+  std::set<std::int32_t> labels(all.begin(), all.end());
   labels.erase(0);
   return { labels.size(), labels.empty() ? 0 : *labels.rbegin() };
 }

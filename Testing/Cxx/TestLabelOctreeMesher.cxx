@@ -50,7 +50,7 @@ TEST(LabelOctreeMesher, RefusesBadInput)
   negative(1, 1, 1) = -3;
   EXPECT_THROW(MeshLabelImage(negative, {}), std::invalid_argument);
   LabelImage mismatched(4, 4, 4);
-  mismatched.Labels.resize(10, 1);
+  mismatched.Dimensions[0] = 5; // 80 labels stored for 100 voxels
   EXPECT_THROW(MeshLabelImage(mismatched, {}), std::invalid_argument);
   LabelImage good(4, 4, 4);
   good(1, 1, 1) = 1;
@@ -184,7 +184,7 @@ TEST(LabelOctreeMesher, TwoDimensionalDiscIsConformingAndExactAtZeroDistance)
   for (std::size_t c = 0; c < result.Mesh.NumberOfCells(); ++c)
     if (result.Mesh.Materials[c] == 3)
       area += CellMeasure(result.Mesh, c);
-  for (std::int32_t l : image.Labels)
+  for (std::int32_t l : image.LabelsAsInt32())
     pixels += l == 3;
   EXPECT_NEAR(area, pixels, 1e-9);
   EXPECT_TRUE(MeasureConformity(result.Mesh).Conforming());

@@ -59,7 +59,7 @@ bool HasEnclosedBackground(const LabelImage& image)
     }
   }
   for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
-    if (image.Labels[v] == 0 && !reached[v])
+    if (image.Label(v) == 0 && !reached[v])
       return true;
   return false;
 }
@@ -102,7 +102,8 @@ bool HasIsolatedVoxel(const LabelImage& image)
 
 std::size_t Count(const LabelImage& image, std::int32_t label)
 {
-  return static_cast<std::size_t>(std::count(image.Labels.begin(), image.Labels.end(), label));
+  const std::vector<std::int32_t> labels = image.LabelsAsInt32();
+  return static_cast<std::size_t>(std::count(labels.begin(), labels.end(), label));
 }
 
 const std::vector<RandomFeature> kAllFeatures{ RandomFeature::Blob, RandomFeature::TouchingMaterials,
@@ -156,9 +157,9 @@ TEST(RandomLabelImages, SameSeedGivesIdenticalImage)
       const auto a = GenerateRandomLabelImageWithDescription(seed, dimension);
       const auto b = GenerateRandomLabelImageWithDescription(seed, dimension);
       EXPECT_EQ(a.Image.Dimensions, b.Image.Dimensions);
-      EXPECT_EQ(a.Image.Labels, b.Image.Labels) << a.Describe();
+      EXPECT_EQ(a.Image.LabelsAsInt32(), b.Image.LabelsAsInt32()) << a.Describe();
       EXPECT_EQ(a.Describe(), b.Describe());
-      EXPECT_EQ(GenerateRandomLabelImage(seed, dimension).Labels, a.Image.Labels);
+      EXPECT_EQ(GenerateRandomLabelImage(seed, dimension).LabelsAsInt32(), a.Image.LabelsAsInt32());
     }
 }
 
@@ -197,7 +198,7 @@ TEST(RandomLabelImages, LabelCountsAndSizesWithinRange)
       const auto r = GenerateRandomLabelImageWithDescription(seed, dimension);
       const auto& image = r.Image;
       ASSERT_EQ(image.Dimension(), dimension) << r.Describe();
-      ASSERT_EQ(image.Labels.size(),
+      ASSERT_EQ(image.NumberOfVoxels(),
         std::size_t(image.Dimensions[0]) * image.Dimensions[1] * image.Dimensions[2]);
       const int lo = dimension == 3 ? options.MinSize3D : options.MinSize2D;
       const int hi = dimension == 3 ? options.MaxSize3D : options.MaxSize2D;
@@ -210,7 +211,7 @@ TEST(RandomLabelImages, LabelCountsAndSizesWithinRange)
       ASSERT_GE(present.size(), 2u) << r.Describe();
       ASSERT_LE(present.size(), 4u) << r.Describe();
       ASSERT_EQ(present, r.LabelIds) << r.Describe();
-      for (auto l : image.Labels)
+      for (auto l : image.LabelsAsInt32())
         ASSERT_GE(l, 0);
       for (auto l : present)
       {

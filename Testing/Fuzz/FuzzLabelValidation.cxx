@@ -98,7 +98,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       Finding("accepted a label of " + std::to_string(label));
     ++given[label];
   }
-  for (std::int32_t label : converted.Labels)
+  for (std::int32_t label : converted.LabelsAsInt32())
     ++kept[static_cast<double>(label)];
   const auto sameLabels = [](const std::map<double, std::size_t>& a, const std::map<double, std::size_t>& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const auto& x, const auto& y) { return x.first == y.first; });

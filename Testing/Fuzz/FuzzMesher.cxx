@@ -38,10 +38,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int nz = dimension == 3 ? std::clamp<int>(data[3], 2, largest) : 1;
   LabelImage image(nx, ny, nz);
   bool foreground = false;
-  for (std::size_t v = 0; v < image.Labels.size(); ++v)
+  for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
   {
-    image.Labels[v] = 6 + v < size ? data[6 + v] % 4 : 0;
-    foreground = foreground || image.Labels[v] != 0;
+    image.SetLabel(v, 6 + v < size ? data[6 + v] % 4 : 0);
+    foreground = foreground || image.Label(v) != 0;
   }
   if (!foreground)
     return 0; // refused by design (the mesher's input checks), not a guarantee

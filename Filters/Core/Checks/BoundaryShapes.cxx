@@ -24,7 +24,7 @@ void AddImageBoundary(const LabelImage& image, Boundaries& b)
 {
   const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
   const int dim = image.Dimension();
-  if (nx <= 0 || ny <= 0 || nz <= 0 || image.Labels.empty())
+  if (nx <= 0 || ny <= 0 || nz <= 0 || image.NumberOfVoxels() == 0)
     return;
   for (int axis = 0; axis < dim; ++axis)
   {

@@ -64,7 +64,7 @@ inline void ForEachDistinct(const std::int32_t* v, int n, F&& f)
 void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyComparison>& out)
 {
   const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
-  if (nx <= 0 || ny <= 0 || nz <= 0 || image.Labels.empty())
+  if (nx <= 0 || ny <= 0 || nz <= 0 || image.NumberOfVoxels() == 0)
     return;
   // Compact material indices.
   std::vector<std::int32_t> labels; // compact index -> label (0 -> 0)
@@ -94,10 +94,12 @@ void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyCompa
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
     {
-      const std::int32_t* src = image.Labels.data() + image.Index(0, j, k);
-      std::int32_t* dst = q.data() + (k + kOff) * sz + (j + 1) * sy + 1;
-      for (int i = 0; i < nx; ++i)
-        dst[i] = compact(src[i]);
+      image.WithLabels([&](const auto* labels) {
+        const auto* src = labels + image.Index(0, j, k);
+        std::int32_t* dst = q.data() + (k + kOff) * sz + (j + 1) * sy + 1;
+        for (int i = 0; i < nx; ++i)
+          dst[i] = compact(src[i]);
+      });
     }
   const std::size_t M = labels.size();
   std::vector<Counts> counts(M);

@@ -13,30 +13,53 @@
  * faces between a foreground voxel and the outside of the image (the outside is
  * background, label 0). A 2D image has dims[2] == 1 and lives in the plane z = 0.
  *
+ * Storage is as narrow as the labels allow: 1 byte per voxel while every label
+ * is in [0, 255], 2 bytes up to 65,535, 4 bytes beyond (or for a negative
+ * label, which the mesher then refuses). Most label maps have fewer than 256
+ * labels, and the image is the run's largest structure at scale (a 1024^3
+ * image is 1 GiB at one byte, 4 GiB at four). Writing a label that does not
+ * fit widens the storage once; readers see int32 labels either way.
+ *
  * Physical placement (origin, spacing, direction) is applied by the VTK adapter.
  */
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace labelmesher
 {
 
-struct LabelImage
+class LabelImage
 {
+public:
   std::array<int, 3> Dimensions{ 0, 0, 0 }; ///< voxels along x, y, z (z == 1 in 2D)
-  std::vector<std::int32_t> Labels;         ///< x fastest; 0 = background; never negative
 
   LabelImage() = default;
-  LabelImage(int nx, int ny, int nz)
+  /// Every voxel background (0); `bytesPerLabel` (1, 2 or 4) sets the storage to
+  /// start with, e.g. from BytesForLabels when the largest label is known.
+  LabelImage(int nx, int ny, int nz, int bytesPerLabel = 1)
     : Dimensions{ nx, ny, nz }
-    , Labels(static_cast<std::size_t>(nx) * ny * nz, 0)
+    , Voxels(static_cast<std::size_t>(nx) * ny * nz)
+    , Width(bytesPerLabel == 2 || bytesPerLabel == 4 ? bytesPerLabel : 1)
   {
+    Allocate();
+  }
+
+  /// The narrowest storage that holds every label in [smallest, largest].
+  static int BytesForLabels(std::int64_t smallest, std::int64_t largest)
+  {
+    if (smallest < 0 || largest > 65535)
+      return 4;
+    return largest > 255 ? 2 : 1;
   }
 
   int Dimension() const { return Dimensions[2] == 1 ? 2 : 3; }
-  std::size_t NumberOfVoxels() const { return Labels.size(); }
+  /// The number of labels stored (the product of the dimensions unless
+  /// Dimensions was changed after construction).
+  std::size_t NumberOfVoxels() const { return Voxels; }
+  int BytesPerLabel() const { return Width; }
   bool Contains(int i, int j, int k) const
   {
     return i >= 0 && j >= 0 && k >= 0 && i < Dimensions[0] && j < Dimensions[1] &&
@@ -46,9 +69,135 @@ struct LabelImage
   {
     return (static_cast<std::size_t>(k) * Dimensions[1] + j) * Dimensions[0] + i;
   }
+
+  /// Label of the voxel at `index` (x fastest).
+  std::int32_t Label(std::size_t index) const
+  {
+    switch (Width)
+    {
+      case 1:
+        return Labels8[index];
+      case 2:
+        return Labels16[index];
+      default:
+        return Labels32[index];
+    }
+  }
   /// Label of voxel (i, j, k); voxels outside the image are background (0).
-  std::int32_t At(int i, int j, int k) const { return Contains(i, j, k) ? Labels[Index(i, j, k)] : 0; }
-  std::int32_t& operator()(int i, int j, int k) { return Labels[Index(i, j, k)]; }
+  std::int32_t At(int i, int j, int k) const { return Contains(i, j, k) ? Label(Index(i, j, k)) : 0; }
+
+  void SetLabel(std::size_t index, std::int32_t label)
+  {
+    const int needed = label >= 0 && label <= 255 ? 1 : BytesForLabels(label, label);
+    if (needed > Width)
+      Widen(needed);
+    switch (Width)
+    {
+      case 1:
+        Labels8[index] = static_cast<std::uint8_t>(label);
+        break;
+      case 2:
+        Labels16[index] = static_cast<std::uint16_t>(label);
+        break;
+      default:
+        Labels32[index] = label;
+    }
+  }
+  void Set(int i, int j, int k, std::int32_t label) { SetLabel(Index(i, j, k), label); }
+  void Fill(std::int32_t label)
+  {
+    for (std::size_t v = 0; v < Voxels; ++v)
+      SetLabel(v, label);
+  }
+
+  /// A writable label: `image(i, j, k) = 3`, `image(i, j, k) == 3`.
+  class Reference
+  {
+  public:
+    Reference(LabelImage& image, std::size_t index)
+      : Image(image)
+      , At(index)
+    {
+    }
+    operator std::int32_t() const { return Image.Label(At); }
+    Reference& operator=(std::int32_t label)
+    {
+      Image.SetLabel(At, label);
+      return *this;
+    }
+    Reference& operator=(const Reference& other) { return *this = static_cast<std::int32_t>(other); }
+
+  private:
+    LabelImage& Image;
+    std::size_t At;
+  };
+  Reference operator()(int i, int j, int k) { return Reference(*this, Index(i, j, k)); }
+  std::int32_t operator()(int i, int j, int k) const { return Label(Index(i, j, k)); }
+
+  /// Calls `visit(labels)` with the stored labels as a pointer to their own
+  /// type (std::uint8_t, std::uint16_t or std::int32_t), so that a generic
+  /// lambda runs a whole-image loop without a width test per voxel.
+  template <typename Visit>
+  decltype(auto) WithLabels(Visit&& visit) const
+  {
+    switch (Width)
+    {
+      case 1:
+        return visit(static_cast<const std::uint8_t*>(Labels8.data()));
+      case 2:
+        return visit(static_cast<const std::uint16_t*>(Labels16.data()));
+      default:
+        return visit(static_cast<const std::int32_t*>(Labels32.data()));
+    }
+  }
+
+  /// Every label, widened (for tests and small images).
+  std::vector<std::int32_t> LabelsAsInt32() const
+  {
+    std::vector<std::int32_t> out(Voxels);
+    for (std::size_t v = 0; v < Voxels; ++v)
+      out[v] = Label(v);
+    return out;
+  }
+
+  friend bool operator==(const LabelImage& a, const LabelImage& b)
+  {
+    if (a.Dimensions != b.Dimensions || a.Voxels != b.Voxels)
+      return false;
+    if (a.Width == b.Width)
+      return a.Labels8 == b.Labels8 && a.Labels16 == b.Labels16 && a.Labels32 == b.Labels32;
+    for (std::size_t v = 0; v < a.Voxels; ++v)
+      if (a.Label(v) != b.Label(v))
+        return false;
+    return true;
+  }
+  friend bool operator!=(const LabelImage& a, const LabelImage& b) { return !(a == b); }
+
+private:
+  void Allocate()
+  {
+    Labels8.assign(Width == 1 ? Voxels : 0, 0);
+    Labels16.assign(Width == 2 ? Voxels : 0, 0);
+    Labels32.assign(Width == 4 ? Voxels : 0, 0);
+  }
+  void Widen(int width)
+  {
+    LabelImage wider(0, 0, 0, width);
+    wider.Voxels = Voxels;
+    wider.Allocate();
+    for (std::size_t v = 0; v < Voxels; ++v)
+      wider.SetLabel(v, Label(v));
+    Labels8.swap(wider.Labels8);
+    Labels16.swap(wider.Labels16);
+    Labels32.swap(wider.Labels32);
+    Width = width;
+  }
+
+  std::size_t Voxels = 0;
+  int Width = 1; ///< bytes per label: 1, 2 or 4; the one vector of that width holds the labels
+  std::vector<std::uint8_t> Labels8;
+  std::vector<std::uint16_t> Labels16;
+  std::vector<std::int32_t> Labels32;
 };
 
 } // namespace labelmesher

@@ -15,12 +15,14 @@ namespace
 constexpr double kCellsPerFace3D = 17.9, kCellsPerFace2D = 4.5, kCellsPerVoxel = 0.05;
 // Peak growth of the process, bytes: the mesher with its output packed for
 // VTK, per initial cell; the decimator with that output held, per initial
-// cell; per voxel, the core's copy of the (resampled) image and its pyramid;
-// and a fixed part (MPI's start, threads' arenas).
+// cell; per voxel, the core's copy of the (resampled) image, as wide as its
+// labels need (LabelImage.h), and its pyramid from the second level up (8
+// bytes per 64 voxels, and an eighth of that again per level above); and a
+// fixed part (MPI's start, threads' arenas).
 constexpr double kMesherBytesPerCell = 112.0;
 constexpr double kHeldBytesPerCell = 50.0; ///< VTK's grid: 4 + 1 ids, a type, a label, a fifth of a point
 constexpr double kDecimatorBytesPerCell = 91.0;
-constexpr double kBytesPerVoxel = 3.1;
+constexpr double kPyramidBytesPerVoxel = 0.15;
 constexpr double kFixedBytes = 25.0 * 1024 * 1024;
 /// Streamed (Streaming/StreamedPipeline.h; Benchmarks/README.md, "Memory"):
 /// a block filled and decimated in place, per initial cell; the output held
@@ -32,6 +34,11 @@ constexpr double kOutputBytesPerCell = 40.0;
 constexpr double kLastPassBytesPerCell = 140.0;
 constexpr double kLastPassShare = 0.18;
 constexpr double kStreamedBytesPerFace = 64.0;
+
+double ImageBytes(const LabelImage& image)
+{
+  return (image.BytesPerLabel() + kPyramidBytesPerVoxel) * static_cast<double>(image.NumberOfVoxels());
+}
 } // namespace
 
 std::uint64_t CountInterfaceFaces(const LabelImage& image)
@@ -43,7 +50,7 @@ std::uint64_t CountInterfaceFaces(const LabelImage& image)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
       {
-        const std::int32_t l = image.Labels[image.Index(i, j, k)];
+        const std::int32_t l = image.Label(image.Index(i, j, k));
         // Each voxel owns its low faces; the image's high border adds the rest.
         faces += l != image.At(i - 1, j, k);
         faces += l != image.At(i, j - 1, k);
@@ -64,7 +71,7 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate)
   e.InitialCells = static_cast<std::uint64_t>(cells);
   const double mesher = kMesherBytesPerCell * cells;
   const double decimator = decimate ? (kHeldBytesPerCell + kDecimatorBytesPerCell) * cells : 0.0;
-  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
+  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + ImageBytes(image) +
     std::max(mesher, decimator));
   return e;
 }
@@ -81,7 +88,7 @@ MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blo
   const double assembled = oneBlock ? 0.0 : kLastPassShare * cells;
   const double run = std::max(kBlockBytesPerCell * block + kOutputBytesPerCell * assembled,
     kLastPassBytesPerCell * assembled);
-  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + kBytesPerVoxel * static_cast<double>(e.Voxels) +
+  e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + ImageBytes(image) +
     kStreamedBytesPerFace * static_cast<double>(e.InterfaceFaces) + run);
   return e;
 }

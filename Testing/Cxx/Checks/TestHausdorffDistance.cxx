@@ -125,7 +125,7 @@ TEST(HausdorffDistance, MissingCornerVoxel)
   // from the nearest remaining outer faces; h(M, I) = 1: the cavity's inner
   // corner (.5,.5,.5) is 1 from the image's outer planes.
   LabelImage image(4, 4, 4);
-  std::fill(image.Labels.begin(), image.Labels.end(), 1);
+  image.Fill(1);
   LabelImage meshed = image;
   meshed(0, 0, 0) = 0;
   const SimplexMesh mesh = VoxelMesh(meshed);

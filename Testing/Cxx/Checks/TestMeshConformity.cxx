@@ -37,7 +37,7 @@ SimplexMesh Empty3D(const std::vector<Point3>& pts)
 TEST(MeshConformity, KuhnBlockIsConforming)
 {
   LabelImage image(3, 2, 2);
-  std::fill(image.Labels.begin(), image.Labels.end(), 1);
+  image.Fill(1);
   image(1, 1, 1) = 2; // a second material changes nothing
   const ConformityReport r = MeasureConformity(VoxelMesh(image));
   EXPECT_EQ(r.OverSharedFaces, 0u);
@@ -160,8 +160,8 @@ TEST(MeshConformity, RandomVoxelMeshesHaveNoHangingOrOverSharedFaces)
   for (int trial = 0; trial < 5; ++trial)
   {
     LabelImage image(7, 6, trial % 2 ? 1 : 5);
-    for (auto& l : image.Labels)
-      l = static_cast<std::int32_t>(rng() % 3);
+    for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+      image.SetLabel(v, static_cast<std::int32_t>(rng() % 3));
     const SimplexMesh m = VoxelMesh(image);
     const ConformityReport r = MeasureConformity(m);
     EXPECT_EQ(r.OverSharedFaces, 0u) << trial;
@@ -172,7 +172,7 @@ TEST(MeshConformity, RandomVoxelMeshesHaveNoHangingOrOverSharedFaces)
 TEST(MeshConformity, LargeMeshIsFast)
 {
   LabelImage image(60, 60, 60);
-  std::fill(image.Labels.begin(), image.Labels.end(), 1);
+  image.Fill(1);
   const SimplexMesh m = VoxelMesh(image); // 1.3 M tetrahedra
   const auto t0 = std::chrono::steady_clock::now();
   const ConformityReport r = MeasureConformity(m);

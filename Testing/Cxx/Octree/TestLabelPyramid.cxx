@@ -125,8 +125,7 @@ TEST(LabelPyramid, VoxelsOutsideTheImageCountAsBackground)
   // A 3x5x7 image of label 5. Blocks reaching past its sides hold 0 and 5;
   // blocks wholly past them hold 0 only; the 8^3 root holds 0 and 5.
   LabelImage image(3, 5, 7);
-  for (std::int32_t& l : image.Labels)
-    l = 5;
+  image.Fill(5);
   const LabelPyramid pyramid(image, 3);
   auto expect = [&](int level, int i, int j, int k, std::int32_t first, std::int32_t second) {
     const LabelSummary s = pyramid.Block(level, i, j, k);
@@ -209,8 +208,8 @@ TEST(LabelPyramid, EveryBlockOfLabelNoiseMatchesABruteForceCount)
   {
     LabelImage image(dims[0], dims[1], dims[2]);
     const int labels = 1 + static_cast<int>(random.Int(1, 3));
-    for (std::int32_t& l : image.Labels)
-      l = random.Chance(0.7) ? 4 : static_cast<std::int32_t>(random.Int(0, labels));
+    for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+      image.SetLabel(v, random.Chance(0.7) ? 4 : static_cast<std::int32_t>(random.Int(0, labels)));
     CompareEveryBlock(image, OctreeDepth(image) + 1,
       "noise " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
   }

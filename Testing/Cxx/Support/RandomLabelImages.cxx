@@ -609,7 +609,7 @@ RandomLabelImage GenerateRandomLabelImageWithDescription(
   for (int round = 0; round < 1000; ++round)
   {
     std::map<std::int32_t, std::size_t> counts;
-    for (auto l : result.Image.Labels)
+    for (auto l : result.Image.LabelsAsInt32())
       ++counts[l];
     std::int32_t missing = -1;
     for (auto l : labels)
@@ -630,7 +630,7 @@ RandomLabelImage GenerateRandomLabelImageWithDescription(
       continue;
     }
     const Vec p = canvas.RandomVoxelCentre(1);
-    auto& voxel = result.Image(int(p[0]), int(p[1]), int(p[2]));
+    auto voxel = result.Image(int(p[0]), int(p[1]), int(p[2]));
     if (counts[voxel] <= 1)
       continue;
     voxel = missing;
@@ -668,8 +668,8 @@ RandomLabelImage GenerateRandomBoxImage(std::uint64_t seed, int dimension, int s
   const int boxes = int(random.Int(3, 10));
   for (int b = 0;; ++b)
   {
-    const bool foreground = std::any_of(
-      result.Image.Labels.begin(), result.Image.Labels.end(), [](std::int32_t l) { return l != 0; });
+    const std::vector<std::int32_t> labels = result.Image.LabelsAsInt32();
+    const bool foreground = std::any_of(labels.begin(), labels.end(), [](std::int32_t l) { return l != 0; });
     if (b >= boxes && foreground)
       break; // else one more box, until something is left in the foreground
     int lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
@@ -702,7 +702,7 @@ std::string RandomLabelImage::Describe() const
   if (Image.Dimension() == 3)
     out << "x" << d[2];
   std::map<std::int32_t, std::size_t> counts;
-  for (auto l : Image.Labels)
+  for (auto l : Image.LabelsAsInt32())
     ++counts[l];
   out << " labels(voxels):";
   for (const auto& [label, n] : counts)
@@ -727,7 +727,7 @@ std::uint64_t LabelImageChecksum(const LabelImage& image)
   };
   for (int a = 0; a < 3; ++a)
     mix(static_cast<std::uint32_t>(image.Dimensions[a]));
-  for (auto l : image.Labels)
+  for (auto l : image.LabelsAsInt32())
     mix(static_cast<std::uint32_t>(l));
   return h;
 }
@@ -773,7 +773,7 @@ std::vector<std::int32_t> PresentLabels(const LabelImage& image)
 {
   std::vector<bool> small(1024, false);
   std::vector<std::int32_t> large;
-  for (auto l : image.Labels)
+  for (auto l : image.LabelsAsInt32())
   {
     if (l == 0)
       continue;

@@ -143,13 +143,13 @@ LabelImage MakeCassiniVolume(int n, const CassiniOptions& options)
       const double y = j - c, z = k - c, yz = y * y + z * z;
       if (yz > b * b) // |p - F1| |p - F2| >= (distance to the x axis)^2
         continue;
-      std::int32_t* row = &image(0, j, k);
+      const std::size_t row = image.Index(0, j, k);
       for (int i = 0; i < n; ++i)
       {
         const double x = i - c;
         const double s = x * x + yz + a2;
         if (s * s - 4.0 * a2 * x * x <= b4)
-          row[i] = (options.SplitLobes && x >= 0) ? options.LabelB : options.LabelA;
+          image.SetLabel(row + i, (options.SplitLobes && x >= 0) ? options.LabelB : options.LabelA);
       }
     }
   return image;

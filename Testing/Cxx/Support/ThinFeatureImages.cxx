@@ -184,7 +184,8 @@ RandomLabelImage GenerateThinFeatureImage(std::uint64_t seed, int dimension, int
     }
   }
 
-  if (std::none_of(result.Image.Labels.begin(), result.Image.Labels.end(), [](std::int32_t l) { return l != 0; }))
+  const std::vector<std::int32_t> labels = result.Image.LabelsAsInt32();
+  if (std::none_of(labels.begin(), labels.end(), [](std::int32_t l) { return l != 0; }))
     painter.Paint(pieces.front().first, pieces.front().second, "piece (again)");
   result.LabelIds = PresentLabels(result.Image);
   return result;

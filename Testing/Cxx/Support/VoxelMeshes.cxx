@@ -71,8 +71,8 @@ SimplexMesh VoxelMesh(const LabelImage& image, bool withBackground, Point3 shift
 LabelImage RandomImage(std::mt19937& rng, int nx, int ny, int nz, int labels, int fillPercent)
 {
   LabelImage image(nx, ny, nz);
-  for (auto& l : image.Labels)
-    l = static_cast<int>(rng() % 100) < fillPercent ? 1 + static_cast<std::int32_t>(rng() % labels) : 0;
+  for (std::size_t v = 0; v < image.NumberOfVoxels(); ++v)
+    image.SetLabel(v, static_cast<int>(rng() % 100) < fillPercent ? 1 + static_cast<std::int32_t>(rng() % labels) : 0);
   return image;
 }
 

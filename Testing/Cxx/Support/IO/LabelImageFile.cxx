@@ -42,7 +42,7 @@ LabelImageFile ReadLabelImageFile(const std::string& path)
     const double label = labels->GetComponent(static_cast<vtkIdType>(v), 0);
     if (label < 0)
       throw std::runtime_error("'" + path + "' has negative labels");
-    result.Image.Labels[v] = static_cast<std::int32_t>(label);
+    result.Image.SetLabel(v, static_cast<std::int32_t>(label));
   }
   return result;
 }

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// LabelImage stores labels as narrowly as they allow (1, 2 or 4 bytes) and
+// widens itself when a label does not fit; every reader sees the same int32s.
+#include "Support/LabelImage.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace labelmesher
+{
+namespace
+{
+
+std::vector<std::int32_t> Visited(const LabelImage& image)
+{
+  std::vector<std::int32_t> out;
+  image.WithLabels([&](const auto* labels) { out.assign(labels, labels + image.NumberOfVoxels()); });
+  return out;
+}
+
+TEST(LabelImage, StartsBackgroundInOneBytePerVoxel)
+{
+  const LabelImage image(4, 3, 2);
+  EXPECT_EQ(image.BytesPerLabel(), 1);
+  EXPECT_EQ(image.NumberOfVoxels(), 24u);
+  EXPECT_EQ(image.LabelsAsInt32(), std::vector<std::int32_t>(24, 0));
+  EXPECT_EQ(image.At(-1, 0, 0), 0);
+  EXPECT_EQ(image.At(4, 0, 0), 0);
+}
+
+TEST(LabelImage, WidensOnlyWhenALabelDoesNotFitAndKeepsEveryLabel)
+{
+  LabelImage image(5, 4, 3);
+  std::mt19937 rng(7);
+  std::vector<std::int32_t> expected(image.NumberOfVoxels(), 0);
+  auto write = [&](std::int32_t largest) {
+    for (std::size_t v = 0; v < expected.size(); v += 1 + rng() % 3)
+    {
+      expected[v] = static_cast<std::int32_t>(rng() % (static_cast<std::uint32_t>(largest) + 1));
+      image.SetLabel(v, expected[v]);
+    }
+    EXPECT_EQ(image.LabelsAsInt32(), expected);
+    EXPECT_EQ(Visited(image), expected);
+  };
+  write(255);
+  EXPECT_EQ(image.BytesPerLabel(), 1);
+  image(1, 2, 1) = 255;
+  expected[image.Index(1, 2, 1)] = 255;
+  EXPECT_EQ(image.BytesPerLabel(), 1);
+  image(2, 1, 1) = 256;
+  expected[image.Index(2, 1, 1)] = 256;
+  EXPECT_EQ(image.BytesPerLabel(), 2);
+  write(65535);
+  EXPECT_EQ(image.BytesPerLabel(), 2);
+  image.Set(0, 0, 2, 65536);
+  expected[image.Index(0, 0, 2)] = 65536;
+  EXPECT_EQ(image.BytesPerLabel(), 4);
+  write(2147483646);
+  EXPECT_EQ(image.At(0, 0, 2), expected[image.Index(0, 0, 2)]);
+  // Small labels never narrow it again; a negative label (refused later by the mesher) is kept.
+  image.Fill(3);
+  EXPECT_EQ(image.BytesPerLabel(), 4);
+  image(4, 3, 2) = -5;
+  EXPECT_EQ(image.At(4, 3, 2), -5);
+}
+
+TEST(LabelImage, ANegativeLabelIsStoredAsItIs)
+{
+  LabelImage image(2, 2, 1);
+  image(1, 1, 0) = -1;
+  EXPECT_EQ(image.BytesPerLabel(), 4);
+  EXPECT_EQ(image.At(1, 1, 0), -1);
+  EXPECT_EQ(image.At(0, 1, 0), 0);
+}
+
+TEST(LabelImage, TheWidthFollowsTheLabelRange)
+{
+  EXPECT_EQ(LabelImage::BytesForLabels(0, 0), 1);
+  EXPECT_EQ(LabelImage::BytesForLabels(0, 255), 1);
+  EXPECT_EQ(LabelImage::BytesForLabels(0, 256), 2);
+  EXPECT_EQ(LabelImage::BytesForLabels(3, 65535), 2);
+  EXPECT_EQ(LabelImage::BytesForLabels(0, 65536), 4);
+  EXPECT_EQ(LabelImage::BytesForLabels(-1, 1), 4);
+  EXPECT_EQ(LabelImage(2, 2, 2, 2).BytesPerLabel(), 2);
+  EXPECT_EQ(LabelImage(2, 2, 2, 4).BytesPerLabel(), 4);
+  EXPECT_EQ(LabelImage(2, 2, 2, 3).BytesPerLabel(), 1); // not a width: the narrowest
+}
+
+TEST(LabelImage, ImagesAreEqualByTheirLabelsWhateverTheirWidths)
+{
+  LabelImage narrow(3, 3, 1), wide(3, 3, 1, 4);
+  narrow(1, 1, 0) = 9;
+  wide(1, 1, 0) = 9;
+  EXPECT_EQ(narrow, wide);
+  wide(2, 1, 0) = 1;
+  EXPECT_NE(narrow, wide);
+  LabelImage other(3, 1, 3);
+  other(1, 0, 1) = 9;
+  EXPECT_NE(narrow, other); // same labels, other dimensions
+}
+
+TEST(LabelImage, AWriteThroughAReferenceReadsBack)
+{
+  LabelImage image(3, 2, 1);
+  auto voxel = image(2, 1, 0); // a reference into the image, not a copy
+  voxel = 300;
+  EXPECT_EQ(image.At(2, 1, 0), 300);
+  image(0, 0, 0) = image(2, 1, 0);
+  EXPECT_EQ(image.At(0, 0, 0), 300);
+  const LabelImage& view = image;
+  EXPECT_EQ(view(0, 0, 0), 300);
+}
+
+} // namespace
+} // namespace labelmesher

@@ -92,6 +92,11 @@ inline constexpr char QualityIterations[] = "QualityIterations";
 inline constexpr char MinimumScaledJacobianBound[] = "MinimumScaledJacobianBound";
 inline constexpr char CellsBelowScaledJacobian[] = "CellsBelowScaledJacobian"; ///< after the rounds, before straightening
 inline constexpr char StraightenedForScaledJacobian[] = "StraightenedForScaledJacobian"; ///< 1: every curve made straight
+/// The corner angle every curved cell keeps, degrees: the one asked, or the linear mesh's smallest
+/// angle when that is smaller (0: measured only).
+inline constexpr char CornerAngleBound[] = "CornerAngleBound";
+inline constexpr char CellsBelowCornerAngle[] = "CellsBelowCornerAngle"; ///< after the rounds, before straightening
+inline constexpr char StraightenedForCornerAngle[] = "StraightenedForCornerAngle"; ///< 1: every curve made straight
 inline constexpr char InvalidBeforeUntangling[] = "InvalidBeforeUntangling";
 inline constexpr char InvalidCells[] = "InvalidCells";
 inline constexpr char UntanglingSteps[] = "UntanglingSteps";
@@ -99,6 +104,7 @@ inline constexpr char InterfaceChains[] = "InterfaceChains";
 inline constexpr char ClosedInterfaceChains[] = "ClosedInterfaceChains";
 inline constexpr char CurvedEdges[] = "CurvedEdges";
 inline constexpr char SplitEars[] = "SplitEars";
+inline constexpr char EarCorners[] = "EarCorners"; ///< vertices where a chain turns at an ear instead (corner bound on)
 inline constexpr char ShortenedPieces[] = "ShortenedPieces";       ///< interface pieces left below scale 1
 inline constexpr char StraightenedPieces[] = "StraightenedPieces"; ///< of those, the straight ones
 inline constexpr char PiecesShortenedForBounds[] = "PiecesShortenedForBounds";

@@ -257,6 +257,7 @@ void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result
   AddScalarField(fd, arrays::ClosedInterfaceChains, static_cast<double>(result.NumberOfClosedChains));
   AddScalarField(fd, arrays::CurvedEdges, static_cast<double>(result.NumberOfCurvedEdges));
   AddScalarField(fd, arrays::SplitEars, static_cast<double>(result.SplitEars));
+  AddScalarField(fd, arrays::EarCorners, static_cast<double>(result.EarCorners));
   AddScalarField(fd, arrays::ShortenedPieces, static_cast<double>(result.ShortenedPieces));
   AddScalarField(fd, arrays::StraightenedPieces, static_cast<double>(result.StraightenedPieces));
   AddScalarField(fd, arrays::PiecesShortenedForBounds, static_cast<double>(result.PiecesShortenedForBounds));
@@ -265,6 +266,9 @@ void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result
   AddScalarField(fd, arrays::UntanglingRounds, result.UntanglingRounds);
   AddScalarField(fd, arrays::CellsBelowScaledJacobian, static_cast<double>(result.CellsBelowScaledJacobian));
   AddScalarField(fd, arrays::StraightenedForScaledJacobian, result.StraightenedForScaledJacobian ? 1.0 : 0.0);
+  AddScalarField(fd, arrays::CornerAngleBound, result.CornerAngleBound);
+  AddScalarField(fd, arrays::CellsBelowCornerAngle, static_cast<double>(result.CellsBelowCornerAngle));
+  AddScalarField(fd, arrays::StraightenedForCornerAngle, result.StraightenedForCornerAngle ? 1.0 : 0.0);
 }
 
 /// Pass 5 (field data): the curves' distances, crossings and topology against the image.
@@ -347,6 +351,7 @@ int vtkBezierCurver::RequestData(
   parameters.MaximumShorteningRounds = this->MaximumShorteningRounds;
   parameters.Untangling.QualityIterations = this->QualityIterations;
   parameters.MinimumScaledJacobian = this->MinimumScaledJacobian;
+  parameters.MinimumCornerAngle = this->MinimumCornerAngle;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
   if (imageData &&
@@ -381,6 +386,12 @@ int vtkBezierCurver::RequestData(
     return 1;
   }
 
+  if (this->MinimumCornerAngle > 0.0 && result.CornerAngleBound < this->MinimumCornerAngle)
+  {
+    vtkWarningMacro("The input mesh has an angle of " << result.CornerAngleBound << " degrees, below the corner angle "
+                    << this->MinimumCornerAngle << " asked for: the curved cells keep " << result.CornerAngleBound
+                    << " (field data CornerAngleBound).");
+  }
   PackBezierCells(result, plane, output);
   vtkFieldData* fd = output->GetFieldData();
   PassMaterialTable(input->GetFieldData(), fd);
@@ -430,6 +441,7 @@ void vtkBezierCurver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
   os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
   os << indent << "MinimumScaledJacobian: " << this->MinimumScaledJacobian << "\n";
+  os << indent << "MinimumCornerAngle: " << this->MinimumCornerAngle << " degrees\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
   os << indent << "ImageToMeshDistance: " << this->ImageToMeshDistance << " voxels (negative: the input's)\n";
   os << indent << "MeshToImageDistance: " << this->MeshToImageDistance << " voxels (negative: the input's)\n";

@@ -62,8 +62,7 @@
  *   conservative min|J| / max|J| (1 for straight cells, <= 0 for invalid ones);
  * - `Valid` (unsigned char): 1 where det J > 0 is proven;
  * - `CornerAngle` (double): the smallest angle between the tangents of two
- *   edges at a corner, degrees (measured, not yet kept at the linear mesh's
- *   angle bound: curving and the ear split can make it smaller).
+ *   edges at a corner, degrees (kept at MinimumCornerAngle, see below).
  * Field data: `Smoothness`, `Tension`, `MaximumUntanglingSteps`, `MaximumShorteningRounds`,
  * `QualityIterations`; `InvalidBeforeUntangling` (cells made invalid by curving
  * the boundary alone), `InvalidCells`, `UntanglingSteps`, `InterfaceChains`,
@@ -89,9 +88,12 @@
  * Euler characteristic of every material equal the image's).
  *
  * Ears -- cells with two edges on one smooth interface chain -- would have
- * det J = 0 at their corner once curved, so their third edge is split at its
- * midpoint first (with the cell across it): the output may have a few more cells
- * than the input, over the same region.
+ * det J = 0 at their corner once curved. With MinimumCornerAngle 0, their third
+ * edge is split at its midpoint first (with the cell across it): the output may
+ * have a few more cells than the input, over the same region, and the split
+ * may halve angles. Otherwise (the default) nothing is split: the interface
+ * turns at the ear's vertex (a corner; each side's tangent fitted on its own;
+ * field data `EarCorners`), and that corner keeps the angle bound like any other.
  *
  * Quality: every cell's certified scaled Jacobian (cell data `ScaledJacobian`,
  * min det J / max det J bounded by the Bernstein coefficients of det J with
@@ -100,7 +102,11 @@
  * once after MaximumShorteningRounds, for up to 8 more rounds; if cells are
  * still below it then, every curve is made straight (field data
  * `MinimumScaledJacobianBound`, `CellsBelowScaledJacobian`,
- * `StraightenedForScaledJacobian`).
+ * `StraightenedForScaledJacobian`). In the same way every corner angle (the
+ * angle between the tangents of a cell's two edges at a corner, cell data
+ * `CornerAngle`) is at least MinimumCornerAngle (default 15 degrees), or the
+ * input mesh's smallest angle when that is smaller (a warning says so): field
+ * data `CornerAngleBound`, `CellsBelowCornerAngle`, `StraightenedForCornerAngle`.
  *
  * If some cell cannot be made valid within MaximumUntanglingSteps and
  * MaximumShorteningRounds, the filter
@@ -194,6 +200,22 @@ public:
 
   ///@{
   /**
+   * The smallest corner angle every cell keeps: the angle between the
+   * tangents of two edges at a cell corner, degrees, [0, 179]. Curving turns
+   * the edges at a vertex away from their chords, so without it corners fall
+   * below the linear mesh's angle bound. Cells below it get the curves around
+   * them shortened, as invalid cells do; if the rounds run out first, every
+   * curve is made straight (a straight cell's corners are its angles). Bounded
+   * by the input mesh's smallest angle (the bound kept is the smaller of the
+   * two, field data `CornerAngleBound`). Default 15, vtkMeshDecimator's
+   * default; 0: measured only, and ears are split instead of straightened.
+   */
+  vtkSetClampMacro(MinimumCornerAngle, double, 0.0, 179.0);
+  vtkGetMacro(MinimumCornerAngle, double);
+  ///@}
+
+  ///@{
+  /**
    * The distance bounds the curved interfaces keep against the image on port
    * 1, h(I, M) and h(M, I) in voxels; pieces that would break one are
    * shortened (see the class description). Negative (the default): the bounds
@@ -226,6 +248,7 @@ protected:
   int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
   double MinimumScaledJacobian = 0.1;
+  double MinimumCornerAngle = 15.0;
   double ImageToMeshDistance = -1.0;
   double MeshToImageDistance = -1.0;
 

@@ -147,7 +147,8 @@ bool vtkLabelMeshReport::GetGuaranteesHold()
     {
       return false;
     }
-    return !f.Curved || (f.Curved->Valid() && f.Curved->CurvesFaithful() && f.Curved->ScaledJacobianHolds());
+    return !f.Curved || (f.Curved->Valid() && f.Curved->CurvesFaithful() && f.Curved->ScaledJacobianHolds() &&
+      f.Curved->CornerAnglesHold());
   }
   catch (const std::exception& e)
   {

@@ -227,6 +227,8 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
   curver->SetMaximumShorteningRounds(this->MaximumShorteningRounds);
   curver->SetQualityIterations(this->QualityIterations);
   curver->SetMinimumScaledJacobian(this->MinimumScaledJacobian);
+  // The corners keep the angle the linear mesh was asked for (the mesher's own mesh holds more).
+  curver->SetMinimumCornerAngle(this->MinimumAngle);
   // Copies, so that the inner pipeline leaves this filter's output and input alone.
   vtkNew<vtkUnstructuredGrid> mesh;
   mesh->ShallowCopy(linear);

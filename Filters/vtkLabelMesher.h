@@ -28,7 +28,9 @@
  * Curve on (2D images only): vtkBezierCurver then curves that mesh with the
  * image (its Smoothness, Tension, MaximumUntanglingSteps,
  * MaximumShorteningRounds, QualityIterations, MinimumScaledJacobian), keeping
- * the bounds the linear mesh records; the cubic Bezier mesh is output port 2.
+ * the bounds the linear mesh records and, at every corner of every curved cell,
+ * MinimumAngle between the edges' tangents (vtkBezierCurver's
+ * MinimumCornerAngle); the cubic Bezier mesh is output port 2.
  *
  * Input port 0: the label image, as vtkLabelOctreeMesher's (integer point
  * scalars or the array selected with SetInputArrayToProcess(0, 0, 0, POINTS,

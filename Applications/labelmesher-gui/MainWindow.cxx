@@ -299,7 +299,8 @@ void MainWindow::onFinished()
   {
     done += tr("; CURVING FAILED: %1").arg(QString::fromStdString(out.CurveError));
   }
-  else if (this->Curves && (!this->Curves->CurvesFaithful() || !this->Curves->ScaledJacobianHolds()))
+  else if (this->Curves && (!this->Curves->CurvesFaithful() || !this->Curves->ScaledJacobianHolds() ||
+             !this->Curves->CornerAnglesHold()))
   {
     done += tr("; THE CURVES BREAK A BOUND (see the summary)");
   }
@@ -362,7 +363,7 @@ bool MainWindow::saveMesh(const QString& path)
   const std::optional<labelmesher::io::MeshFormat> format = labelmesher::io::FormatOfPath(path.toStdString());
   if (out.Curved && format && !labelmesher::io::HoldsCurvedCells(*format))
   {
-    this->fail(tr("cannot save '%1': curved (Bezier) cells can be saved as .vtu or .vtk only").arg(path));
+    this->fail(tr("cannot save '%1': curved (Bezier) cells can be saved as .vtu, .vtk or .msh only").arg(path));
     return false;
   }
   try

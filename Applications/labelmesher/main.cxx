@@ -182,6 +182,11 @@ int Run(const Arguments& args)
     throw RunError("a curved cell's scaled Jacobian is below " + FormatFixed(curved.ScaledJacobianBound, 3) +
       " (see the report); the mesh is written for inspection");
   }
+  if (!curved.CornerAnglesHold())
+  {
+    throw RunError("a curved cell's corner angle is below " + FormatFixed(curved.CornerAngleBound, 2) +
+      " degrees (see the report); the mesh is written for inspection");
+  }
   if (!curved.CurvesFaithful())
   {
     throw RunError("the curved mesh breaks a distance bound, crosses an interface or changes the topology "

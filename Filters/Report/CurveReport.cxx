@@ -69,6 +69,9 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.ScaledJacobianBound = FieldValue(fd, arrays::MinimumScaledJacobianBound).value_or(0.0);
   r.CellsBelowScaledJacobian = FieldCount(fd, arrays::CellsBelowScaledJacobian);
   r.StraightenedForScaledJacobian = FieldCount(fd, arrays::StraightenedForScaledJacobian) != 0;
+  r.CornerAngleBound = FieldValue(fd, arrays::CornerAngleBound).value_or(0.0);
+  r.CellsBelowCornerAngle = FieldCount(fd, arrays::CellsBelowCornerAngle);
+  r.StraightenedForCornerAngle = FieldCount(fd, arrays::StraightenedForCornerAngle) != 0;
   r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
   r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
   r.ValidityMeasured = fd->GetArray(arrays::InvalidCells) != nullptr;
@@ -77,6 +80,7 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.ClosedInterfaceChains = FieldCount(fd, arrays::ClosedInterfaceChains);
   r.CurvedEdges = FieldCount(fd, arrays::CurvedEdges);
   r.SplitEars = FieldCount(fd, arrays::SplitEars);
+  r.EarCorners = FieldCount(fd, arrays::EarCorners);
   r.ShortenedPieces = FieldCount(fd, arrays::ShortenedPieces);
   r.StraightenedPieces = FieldCount(fd, arrays::StraightenedPieces);
   r.PiecesShortenedForBounds = FieldCount(fd, arrays::PiecesShortenedForBounds);
@@ -169,7 +173,7 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   out << "Curved mesh: " << r.Cells << " cubic Bezier triangles, " << r.ControlPoints
       << " control points, C" << r.Smoothness << " boundaries (" << r.InterfaceChains
       << " chains, " << r.ClosedInterfaceChains << " closed, " << r.CurvedEdges
-      << " curved edges, " << r.SplitEars << " ears split)\n";
+      << " curved edges, " << r.SplitEars << " ears split, " << r.EarCorners << " corners at ears)\n";
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
       << r.InvalidBeforeUntangling << " invalid before untangling, " << r.InvalidCells
       << " after; " << r.UntanglingSteps << " load steps)\n";
@@ -178,8 +182,14 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
       << " for validity and the scaled Jacobian; " << r.UntanglingRounds << " untangling rounds)\n";
   if (r.MinimumCornerAngle)
   {
-    out << "Corner angles (between edge tangents): smallest " << FormatFixed(*r.MinimumCornerAngle, 2)
-        << " deg (the linear mesh's bound " << FormatFixed(AngleBoundOf(r.Linear), 2) << " deg; not yet kept)\n";
+    out << "Corner angles (between edge tangents): ";
+    if (r.CornerAngleBound > 0.0)
+      out << "every cell " << (r.CornerAnglesHold() ? "at least " : "NOT at least ") << FormatFixed(r.CornerAngleBound, 2)
+          << " deg (smallest " << FormatFixed(*r.MinimumCornerAngle, 2) << ")"
+          << (r.StraightenedForCornerAngle ? "; every curve made straight to reach it" : "") << "\n";
+    else
+      out << "smallest " << FormatFixed(*r.MinimumCornerAngle, 2) << " deg (the linear mesh's bound "
+          << FormatFixed(AngleBoundOf(r.Linear), 2) << " deg; not kept: no corner bound asked)\n";
   }
   out << "Scaled Jacobian: every cell " << (r.ScaledJacobianHolds() ? "at least " : "NOT at least ")
       << FormatFixed(r.ScaledJacobianBound, 3) << " (certified; smallest " << FormatFixed(r.MinimumScaledJacobian, 4)
@@ -276,6 +286,7 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("closed_interface_chains").Integer(r.ClosedInterfaceChains);
   j.Key("curved_edges").Integer(r.CurvedEdges);
   j.Key("split_ears").Integer(r.SplitEars);
+  j.Key("ear_corners").Integer(r.EarCorners);
   j.Key("shortened_pieces").Integer(r.ShortenedPieces);
   j.Key("straightened_pieces").Integer(r.StraightenedPieces);
   j.Key("pieces_shortened_for_bounds").Integer(r.PiecesShortenedForBounds);
@@ -318,6 +329,10 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
     j.Number(*r.MinimumCornerAngle);
   else
     j.Null();
+  j.Key("corner_angle_bound_degrees").Number(r.CornerAngleBound);
+  j.Key("corner_angle_bound_holds").Bool(r.CornerAnglesHold());
+  j.Key("cells_below_corner_angle_bound").Integer(r.CellsBelowCornerAngle);
+  j.Key("straightened_for_corner_angle").Bool(r.StraightenedForCornerAngle);
   j.Key("cells_below_scaled_jacobian_bound").Integer(r.CellsBelowScaledJacobian);
   j.Key("straightened_for_scaled_jacobian").Bool(r.StraightenedForScaledJacobian);
   j.Key("minimum_jacobian").Number(r.MinimumJacobian);

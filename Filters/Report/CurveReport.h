@@ -41,7 +41,7 @@ struct CurveReport
   int MaximumUntanglingSteps = 0, MaximumShorteningRounds = 0, QualityIterations = 0;
   long long Cells = 0, ControlPoints = 0;
   long long InvalidBeforeUntangling = 0, InvalidCells = 0, UntanglingSteps = 0;
-  long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0;
+  long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0, EarCorners = 0;
   double MinimumScaledJacobian = 0.0, MinimumJacobian = 0.0;
   /// The smallest corner angle of the curved cells (cell data CornerAngle), degrees; none when
   /// the curver did not record it.
@@ -70,6 +70,18 @@ struct CurveReport
   bool StraightenedForScaledJacobian = false;
   /// Every cell's certified scaled Jacobian is at least the bound.
   bool ScaledJacobianHolds() const { return this->MinimumScaledJacobian >= this->ScaledJacobianBound; }
+  /// The corner angle every cell was asked to keep, degrees (field data CornerAngleBound: the one
+  /// asked, or the linear mesh's smallest angle when smaller; 0: measured only); the cells still
+  /// below it after the rounds, and whether every curve was then made straight.
+  double CornerAngleBound = 0.0;
+  long long CellsBelowCornerAngle = 0;
+  bool StraightenedForCornerAngle = false;
+  /// Every corner angle is at least the bound (to within rounding: a straight cell's corners are
+  /// its angles, recomputed from the control points).
+  bool CornerAnglesHold() const
+  {
+    return this->CornerAngleBound <= 0.0 || this->MinimumCornerAngle.value_or(0.0) >= this->CornerAngleBound - 1e-9;
+  }
   bool ValidityMeasured = false; ///< the curver recorded InvalidCells
   bool Valid() const { return this->ValidityMeasured && this->InvalidCells == 0; }
 };

@@ -111,13 +111,27 @@ std::vector<std::pair<std::int64_t, Point2>> Targets(const SimplexMesh& linear, 
   return prescribed;
 }
 
-/// Shortens the curved pieces on the edges of `cells`; for a cell without a
-/// curved edge, those ending at its corners, or failing that at the corners
-/// of the cells around them, ring by ring (a sliver is squeezed by the
-/// elastic displacement of curves nearby). `invalidRounds` counts the rounds
-/// each cell has been invalid in; from its second, its pieces are made
-/// straight rather than halved. False when none was left.
-bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size_t>& cells,
+/// A cell that failed a round, and the corners (bits 0, 1, 2: its vertices
+/// in order) whose curves are to blame: all three for an invalid cell or one
+/// below the scaled Jacobian, those below the angle for a corner angle.
+struct FailingCell
+{
+  std::size_t Cell = 0;
+  std::uint8_t Corners = 7;
+  /// A corner angle alone: a curve leaves its vertex along its handle whatever
+  /// its scale, so halving would not turn it; the curves at the corner are made
+  /// straight at once.
+  bool AngleOnly = false;
+};
+
+/// Shortens the curved pieces on the edges of `cells` that meet their
+/// failing corners; for a cell without such a curved edge, those ending at
+/// those corners, or failing that at the corners of the cells around them,
+/// ring by ring (a sliver is squeezed by the elastic displacement of curves
+/// nearby). `invalidRounds` counts the rounds each cell has failed in; from
+/// its second, its pieces are made straight rather than halved. False when
+/// none was left.
+bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<FailingCell>& cells,
   std::map<std::size_t, int>& invalidRounds, std::vector<CurvePiece>& pieces, std::set<std::size_t>& shortened)
 {
   constexpr int kRings = 8;
@@ -135,20 +149,26 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
       cellsAt.emplace(linear.Cell(c)[k], c);
 
   std::set<std::size_t> chosen, straighten;
-  for (std::size_t c : cells)
+  for (const FailingCell& failing : cells)
   {
     // A cell still invalid after a halving gets its curves straightened at
     // once: halving them again and again would run out of rounds.
-    const bool persistent = ++invalidRounds[c] >= 2;
-    const std::int64_t* v = linear.Cell(c);
+    const bool persistent = ++invalidRounds[failing.Cell] >= 2;
+    const std::int64_t* v = linear.Cell(failing.Cell);
+    auto blamed = [&failing](int corner) { return (failing.Corners >> corner & 1) != 0; };
     std::set<std::size_t> own;
+    std::set<std::int64_t> ring;
     for (int k = 0; k < 3; ++k)
     {
+      if (blamed(k))
+        ring.insert(v[k]);
+      if (!blamed(k) && !blamed((k + 1) % 3))
+        continue; // edge k -> k+1 meets no failing corner
       const auto it = pieceOf.find({ std::min(v[k], v[(k + 1) % 3]), std::max(v[k], v[(k + 1) % 3]) });
       if (it != pieceOf.end() && pieces[it->second].Scale > 0.0)
         own.insert(it->second);
     }
-    std::set<std::int64_t> ring(v, v + 3);
+    const bool atCorner = !own.empty(); // curves that leave a failing corner, not the rings'
     for (int r = 0; own.empty() && r < kRings; ++r)
     {
       for (std::int64_t vertex : ring)
@@ -162,7 +182,7 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<std::size
       ring = std::move(wider);
     }
     chosen.insert(own.begin(), own.end());
-    if (persistent)
+    if (persistent || (failing.AngleOnly && atCorner))
       straighten.insert(own.begin(), own.end());
   }
   for (std::size_t p : chosen)
@@ -187,14 +207,46 @@ Box2 BoxAroundMesh(const SimplexMesh& mesh)
 /// Rounds after MaximumShorteningRounds for cells below the scaled Jacobian bound alone.
 constexpr int kStraighteningRounds = 8;
 
-/// The cells of `mesh` whose certified scaled Jacobian is below `bound`, in order (none when the
-/// bound is 0: validity alone is asked).
-std::vector<std::size_t> CellsBelowScaledJacobian(const CurvedMesh& mesh, double bound)
+/// A straight cell's corners are its angles, computed the same way; curved ones are compared with
+/// the bound to within rounding (the straight control points the untangler returns are not
+/// bit for bit those of MakeStraightCurvedMesh).
+constexpr double kCornerAngleRounding = 1e-9;
+
+/// The smallest corner angle of the linear mesh's cells (degrees), as SmallestCornerAngle measures
+/// it on their straight cubic form.
+double SmallestLinearCornerAngle(const SimplexMesh& linear)
 {
-  std::vector<std::size_t> below;
-  for (std::size_t c = 0; bound > 0.0 && c < mesh.Cells.size(); ++c)
-    if (BoundJacobian(mesh.Cell(c)).ScaledJacobian() < bound)
-      below.push_back(c);
+  const CurvedMesh straight = MakeStraightCurvedMesh(linear);
+  double smallest = 180.0;
+  for (std::size_t c = 0; c < straight.Cells.size(); ++c)
+    smallest = std::min(smallest, SmallestCornerAngle(straight.Cell(c)));
+  return smallest;
+}
+
+/// The cells of `mesh` below the quality asked of a valid mesh, in order: a certified scaled
+/// Jacobian below `scaledJacobian` (every corner to blame), or corners whose angle is below
+/// `cornerAngle` (a bound of 0 asks nothing). Counts each kind (a cell may be both).
+std::vector<FailingCell> CellsBelowQuality(const CurvedMesh& mesh, double scaledJacobian, double cornerAngle,
+  std::size_t& belowScaledJacobian, std::size_t& belowCornerAngle)
+{
+  std::vector<FailingCell> below;
+  belowScaledJacobian = belowCornerAngle = 0;
+  for (std::size_t c = 0; c < mesh.Cells.size(); ++c)
+  {
+    const CubicTriangle cell = mesh.Cell(c);
+    const bool jacobian = scaledJacobian > 0.0 && BoundJacobian(cell).ScaledJacobian() < scaledJacobian;
+    std::uint8_t corners = 0;
+    if (cornerAngle > 0.0)
+    {
+      const std::array<double, 3> angles = CornerAngles(cell);
+      for (int k = 0; k < 3; ++k)
+        corners |= angles[k] < cornerAngle - kCornerAngleRounding ? 1 << k : 0;
+    }
+    belowScaledJacobian += jacobian ? 1 : 0;
+    belowCornerAngle += corners != 0 ? 1 : 0;
+    if (jacobian || corners != 0)
+      below.push_back({ c, static_cast<std::uint8_t>(jacobian ? 7 : corners), !jacobian });
+  }
   return below;
 }
 
@@ -219,6 +271,11 @@ CurvingResult CurveMesh(
   const SimplexMesh& linear, const CurvingParameters& parameters, const ProgressObserver& observer)
 {
   ValidateLinearMesh(linear);
+  if (!(parameters.MinimumCornerAngle >= 0.0 && parameters.MinimumCornerAngle < 180.0))
+  {
+    throw std::invalid_argument("the minimum corner angle must be in [0, 180) degrees, not " +
+      std::to_string(parameters.MinimumCornerAngle));
+  }
   if (!observer.Report("Smoothing boundaries", 0.0))
   {
     throw AbortRequested{};
@@ -228,7 +285,19 @@ CurvingResult CurveMesh(
   const Box2 border = parameters.HasBorder ? parameters.Border : BoxAroundMesh(linear);
   result.Linear = linear;
   std::vector<InterfaceChain> chains = ExtractInterfaceChains(result.Linear, border);
-  result.SplitEars = SplitBoundaryEars(result.Linear, chains, border);
+  if (parameters.MinimumCornerAngle > 0.0)
+  {
+    // No ear split: it would halve angles of the linear mesh, the fallback that keeps the bound.
+    // The chains turn at ears instead (each side's tangent its own), checked like every corner.
+    result.CornerAngleBound = std::min(parameters.MinimumCornerAngle, SmallestLinearCornerAngle(result.Linear));
+    const std::vector<std::int64_t> ears = EarVertices(result.Linear, chains);
+    chains = BreakChainsAt(chains, ears);
+    result.EarCorners = ears.size();
+  }
+  else
+  {
+    result.SplitEars = SplitBoundaryEars(result.Linear, chains, border);
+  }
   result.NumberOfChains = chains.size();
   for (const InterfaceChain& chain : chains)
   {
@@ -236,6 +305,9 @@ CurvingResult CurveMesh(
   }
   result.Mesh = MakeStraightCurvedMesh(result.Linear);
   std::vector<CurvePiece> pieces = SmoothInterfaces(result.Linear, result.Mesh, chains, parameters);
+  // C1 survives one rotation of both handles at a joint; C2 (second derivatives) would not.
+  if (result.CornerAngleBound > 0.0 && parameters.Smoothing.Continuity == Smoothness::C1)
+    result.HandlesTurnedForCorners = TurnHandlesToKeepCorners(result.Linear, chains, pieces, result.CornerAngleBound);
   result.NumberOfCurvedEdges = pieces.size();
   result.Timings.push_back({ "smooth boundaries", SecondsSince(start) });
 
@@ -294,26 +366,33 @@ CurvingResult CurveMesh(
     result.UntanglingSteps = untangled.Steps;
     result.UntanglingRounds = round + 1;
     result.Timings.push_back({ "untangle", SecondsSince(start) });
-    // Invalid cells first; a valid mesh may still have cells below the scaled Jacobian asked for.
-    std::vector<std::size_t> failing = untangled.InvalidCells;
+    // Invalid cells first; a valid mesh may still have cells below the scaled Jacobian or the
+    // corner angle asked for.
+    std::vector<FailingCell> failing;
+    for (std::size_t c : untangled.InvalidCells)
+      failing.push_back({ c, 7, false });
+    std::size_t belowScaledJacobian = 0, belowCornerAngle = 0;
     if (untangled.Valid)
-      failing = CellsBelowScaledJacobian(result.Mesh, parameters.MinimumScaledJacobian);
+      failing = CellsBelowQuality(result.Mesh, parameters.MinimumScaledJacobian, result.CornerAngleBound,
+        belowScaledJacobian, belowCornerAngle);
     // Past the rounds asked for, a valid mesh whose cells are below the bound gets a few more,
     // each making the curves around them straight at once (halving again would not end).
     const bool pastRounds = round + 1 >= parameters.MaximumShorteningRounds;
     if (pastRounds && untangled.Valid)
-      for (std::size_t c : failing)
-        invalidRounds[c] = std::max(invalidRounds[c], 1);
+      for (const FailingCell& f : failing)
+        invalidRounds[f.Cell] = std::max(invalidRounds[f.Cell], 1);
     if (failing.empty() || (pastRounds && !untangled.Valid) ||
       round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
       !ShortenPiecesOfCells(result.Linear, failing, invalidRounds, pieces, shortenedForValidity))
     {
-      result.CellsBelowScaledJacobian = untangled.Valid ? failing.size() : 0;
+      result.CellsBelowScaledJacobian = belowScaledJacobian;
+      result.CellsBelowCornerAngle = belowCornerAngle;
       break;
     }
   }
-  // The last resort of the scaled Jacobian bound: the straight cells of the linear mesh (ratio 1).
-  if (result.CellsBelowScaledJacobian > 0)
+  // The last resort of the quality bounds: the straight cells of the linear mesh (scaled Jacobian 1,
+  // corner angles the linear angles).
+  if (result.CellsBelowScaledJacobian > 0 || result.CellsBelowCornerAngle > 0)
   {
     for (CurvePiece& piece : pieces)
       if (piece.Scale > 0.0)
@@ -323,7 +402,8 @@ CurvingResult CurveMesh(
       }
     result.Mesh = straight;
     UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling);
-    result.StraightenedForScaledJacobian = true;
+    result.StraightenedForScaledJacobian = result.CellsBelowScaledJacobian > 0;
+    result.StraightenedForCornerAngle = result.CellsBelowCornerAngle > 0;
   }
   result.PiecesShortenedForBounds = shortenedForBounds.size();
   result.PiecesShortenedForValidity = shortenedForValidity.size();

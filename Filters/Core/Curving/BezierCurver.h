@@ -10,7 +10,8 @@
  * mesh's boundary vertices (section 4.1), whose interior control points are
  * placed by iterative linear elasticity (section 4.3), and whose every cell's
  * Jacobian is bounded from below by Bézier subdivision (section 4.2). Cells
- * with two edges on one smooth chain are split first (BoundaryEars.h).
+ * with two edges on one smooth chain are split first (BoundaryEars.h), unless
+ * corner angles are bounded (CurvingParameters::MinimumCornerAngle).
  *
  * With the image (CurvingParameters::Image), C1 curves are fitted to it
  * (BoundaryFit.h), and with distance bounds the curves keep both of them and
@@ -22,6 +23,7 @@
 
 #include "Curving/BoundaryEars.h"
 #include "Curving/BoundaryFit.h"
+#include "Curving/CornerHandles.h"
 #include "Curving/CurveFidelity.h"
 #include "Curving/CurvePieces.h"
 #include "Curving/CurvedMesh.h"
@@ -69,6 +71,16 @@ struct CurvingParameters
   /// ones, and when the rounds run out with cells still below it, every curve is made straight
   /// (the linear mesh's cells have ratio 1). 0: validity (det J > 0) only.
   double MinimumScaledJacobian = 0.0;
+  /// Every corner of every curved cell, the angle between the tangents of its two edges there
+  /// (SmallestCornerAngle), at least this, in degrees [0, 180): the linear mesh's own bound, which
+  /// curving would otherwise lower (a curve leaves a vertex along its tangent, not its chord).
+  /// Cells below it get the curves around them shortened like invalid ones, and when the rounds
+  /// run out with cells still below it, every curve is made straight. The bound kept is the
+  /// smaller of this and the linear mesh's smallest angle (CurvingResult::CornerAngleBound): a
+  /// straight cell's corners are its angles. When it is above 0, ears are not split (a split
+  /// halves angles of the linear mesh); the chains turn at them instead (EarVertices). 0: corner
+  /// angles are measured only, and ears are split (BoundaryEars.h).
+  double MinimumCornerAngle = 0.0;
 };
 
 struct CurvingResult
@@ -77,6 +89,12 @@ struct CurvingResult
   /// (BoundaryEars.h); same geometry, possibly more cells.
   SimplexMesh Linear;
   std::size_t SplitEars = 0;
+  /// With a corner angle bound: the vertices where a chain turns instead of passing smoothly, the
+  /// apexes of ears (BoundaryEars.h), which are then not split.
+  std::size_t EarCorners = 0;
+  /// With a corner angle bound and C1 curves: chain vertices whose handles were turned towards
+  /// their chords to keep it (CornerHandles.h).
+  std::size_t HandlesTurnedForCorners = 0;
   CurvedMesh Mesh;
   /// Per cell: proven lower and upper bounds of det J (same order as Mesh.Cells).
   std::vector<JacobianBounds> CellBounds;
@@ -105,6 +123,12 @@ struct CurvingResult
   /// (before every curve was made straight for them), and whether that happened.
   std::size_t CellsBelowScaledJacobian = 0;
   bool StraightenedForScaledJacobian = false;
+  /// The corner angle bound kept (degrees): MinimumCornerAngle, or the linear mesh's smallest
+  /// angle when that is smaller; 0 when none was asked. Cells below it after the rounds (before
+  /// every curve was made straight for them), and whether that happened.
+  double CornerAngleBound = 0.0;
+  std::size_t CellsBelowCornerAngle = 0;
+  bool StraightenedForCornerAngle = false;
   std::vector<StageTiming> Timings;
 };
 

@@ -63,6 +63,59 @@ int EarEdge(const SimplexMesh& mesh, std::size_t c, const ChainGeometry& g)
 
 } // namespace
 
+std::vector<std::int64_t> EarVertices(const SimplexMesh& mesh, const std::vector<InterfaceChain>& chains)
+{
+  const ChainGeometry g = DescribeChains(chains, mesh.Points.size());
+  std::vector<std::int64_t> apexes;
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    const int e = EarEdge(mesh, c, g);
+    if (e >= 0)
+      apexes.push_back(mesh.Cell(c)[(e + 2) % 3]); // the vertex opposite the ear's third edge
+  }
+  std::sort(apexes.begin(), apexes.end());
+  apexes.erase(std::unique(apexes.begin(), apexes.end()), apexes.end());
+  return apexes;
+}
+
+std::vector<InterfaceChain> BreakChainsAt(
+  const std::vector<InterfaceChain>& chains, const std::vector<std::int64_t>& vertices)
+{
+  auto breaks = [&vertices](std::int64_t v) { return std::binary_search(vertices.begin(), vertices.end(), v); };
+  std::vector<InterfaceChain> out;
+  for (const InterfaceChain& chain : chains)
+  {
+    const std::size_t n = chain.Vertices.size();
+    // Where the walk starts: a closed chain at its first break (then it ends there too).
+    std::size_t start = 0;
+    if (chain.Closed)
+    {
+      while (start < n && !breaks(chain.Vertices[start]))
+        ++start;
+      if (start == n)
+      {
+        out.push_back(chain); // no break on it
+        continue;
+      }
+    }
+    const std::size_t length = chain.Closed ? n + 1 : n; // vertices walked, the first again when closed
+    InterfaceChain piece{ {}, false, chain.FirstMaterial, chain.SecondMaterial };
+    for (std::size_t i = 0; i < length; ++i)
+    {
+      const std::int64_t v = chain.Vertices[(start + i) % n];
+      piece.Vertices.push_back(v);
+      const bool inner = i > 0 && i + 1 < length;
+      if (inner && breaks(v))
+      {
+        out.push_back(piece);
+        piece.Vertices = { v };
+      }
+    }
+    out.push_back(piece);
+  }
+  return out;
+}
+
 std::size_t SplitBoundaryEars(
   SimplexMesh& mesh, std::vector<InterfaceChain>& chains, const Box2& border, int maximumRounds)
 {

@@ -9,7 +9,10 @@
  * leave that vertex along the same tangent, so det J = 0 at the corner whatever
  * the interior control points do: no untangling can make the cell valid.
  * Splitting the ear's third edge at its midpoint (and the cell across it, to
- * stay conforming) gives two cells with one chain edge each at that vertex.
+ * stay conforming) gives two cells with one chain edge each at that vertex,
+ * but may halve an angle of the linear mesh. Breaking the chain at the ear's
+ * vertex instead lets the curve turn there (a corner, each side's tangent its
+ * own), and keeps the linear mesh as it is.
  * The dissertation's single closed boundary (section 4.1) rarely has ears;
  * multi-material label meshes (one-pixel lines, speckle) do.
  */
@@ -30,6 +33,14 @@ namespace labelmesher
 /// chain) are left to the validity check, which reports them.
 std::size_t SplitBoundaryEars(SimplexMesh& mesh, std::vector<InterfaceChain>& chains,
   const Box2& border, int maximumRounds = 8);
+
+/// The vertices where `chains` pass smoothly through an ear of `mesh`, in increasing order.
+std::vector<std::int64_t> EarVertices(const SimplexMesh& mesh, const std::vector<InterfaceChain>& chains);
+
+/// `chains` broken at `vertices` (sorted): a closed chain through one becomes an open chain that
+/// starts and ends there, an open chain through one becomes two. Materials are kept.
+std::vector<InterfaceChain> BreakChainsAt(const std::vector<InterfaceChain>& chains,
+  const std::vector<std::int64_t>& vertices);
 
 } // namespace labelmesher
 

@@ -58,25 +58,32 @@ Point2 EvaluateCubicTriangle(const CubicTriangle& triangle, double u, double v, 
   return result;
 }
 
-double SmallestCornerAngle(const CubicTriangle& triangle)
+std::array<double, 3> CornerAngles(const CubicTriangle& triangle)
 {
   // Corner, then the inner control points of its two edges next to it (VTK order).
   static constexpr int Corner[3][3] = { { 0, 3, 8 }, { 1, 5, 4 }, { 2, 7, 6 } };
-  double smallest = 180.0;
-  for (const auto& c : Corner)
+  std::array<double, 3> angles{};
+  for (int k = 0; k < 3; ++k)
   {
-    const Point2& p = triangle.ControlPoints[c[0]];
-    const Point2& a = triangle.ControlPoints[c[1]];
-    const Point2& b = triangle.ControlPoints[c[2]];
+    const Point2& p = triangle.ControlPoints[Corner[k][0]];
+    const Point2& a = triangle.ControlPoints[Corner[k][1]];
+    const Point2& b = triangle.ControlPoints[Corner[k][2]];
     const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
-    const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
-    if (la == 0.0 || lb == 0.0)
-      return 0.0;
+    if (std::hypot(ax, ay) == 0.0 || std::hypot(bx, by) == 0.0)
+    {
+      angles[k] = 0.0;
+      continue;
+    }
     // atan2 of |cross| and dot: accurate near 0 and 180 degrees, unlike acos.
-    const double angle = std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by) * 180.0 / 3.14159265358979323846;
-    smallest = std::min(smallest, angle);
+    angles[k] = std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by) * 180.0 / 3.14159265358979323846;
   }
-  return smallest;
+  return angles;
+}
+
+double SmallestCornerAngle(const CubicTriangle& triangle)
+{
+  const std::array<double, 3> angles = CornerAngles(triangle);
+  return std::min({ angles[0], angles[1], angles[2] });
 }
 
 } // namespace labelmesher

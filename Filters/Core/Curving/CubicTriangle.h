@@ -38,9 +38,11 @@ CubicTriangle StraightCubicTriangle(const Point2& a, const Point2& b, const Poin
 /// The point with barycentric coordinates (u, v, w), u + v + w = 1.
 Point2 EvaluateCubicTriangle(const CubicTriangle& triangle, double u, double v, double w);
 
-/// The smallest of the cell's three corner angles, in degrees: at each corner, the angle between
-/// its two edges' tangents there (towards their first inner control points); a straight cell's
-/// interior angles. 0 when a tangent vanishes (a control point on its corner).
+/// The cell's three corner angles (at control points 0, 1, 2), in degrees: at each corner, the
+/// angle between its two edges' tangents there (towards their first inner control points); a
+/// straight cell's interior angles. 0 when a tangent vanishes (a control point on its corner).
+std::array<double, 3> CornerAngles(const CubicTriangle& triangle);
+/// The smallest of them.
 double SmallestCornerAngle(const CubicTriangle& triangle);
 
 } // namespace labelmesher

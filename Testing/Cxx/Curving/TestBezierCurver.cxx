@@ -325,6 +325,50 @@ TEST(BezierCurver, EarsAreSplitAndCurvedValid)
   EXPECT_TRUE(result.Valid);
 }
 
+TEST(BezierCurver, WithACornerBoundTheChainTurnsAtAnEarAndCornersKeepIt)
+{
+  // The mesh above: its closed boundary turns at the ear's vertex (3,1) instead of being split.
+  SimplexMesh mesh;
+  mesh.Dimension = 2;
+  mesh.Points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 2, 0 }, { 0, 2, 0 }, { 1, 1, 0 }, { 3, 1, 0 } };
+  mesh.Connectivity = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 1, 5, 2 };
+  mesh.Materials = { 1, 1, 1, 1, 1 };
+  const std::vector<InterfaceChain> chains = ExtractInterfaceChains(mesh, { -10, 10, -10, 10 });
+  ASSERT_EQ(chains.size(), 1u);
+  ASSERT_TRUE(chains[0].Closed);
+  EXPECT_EQ(EarVertices(mesh, chains), std::vector<std::int64_t>{ 5 });
+  const std::vector<InterfaceChain> broken = BreakChainsAt(chains, { 5 });
+  ASSERT_EQ(broken.size(), 1u);
+  EXPECT_FALSE(broken[0].Closed);
+  EXPECT_EQ(broken[0].Vertices.front(), 5);
+  EXPECT_EQ(broken[0].Vertices.back(), 5);
+  EXPECT_EQ(broken[0].Vertices.size(), chains[0].Vertices.size() + 1);
+  // An open chain through two breaks becomes three, sharing their ends.
+  const InterfaceChain open{ { 10, 11, 12, 13, 14 }, false, 2, 1 };
+  const std::vector<InterfaceChain> three = BreakChainsAt({ open }, { 11, 13, 14 });
+  ASSERT_EQ(three.size(), 3u);
+  EXPECT_EQ(three[0].Vertices, (std::vector<std::int64_t>{ 10, 11 }));
+  EXPECT_EQ(three[1].Vertices, (std::vector<std::int64_t>{ 11, 12, 13 }));
+  EXPECT_EQ(three[2].Vertices, (std::vector<std::int64_t>{ 13, 14 }));
+  EXPECT_EQ(three[2].FirstMaterial, 2);
+
+  CurvingParameters parameters;
+  parameters.MinimumCornerAngle = 20.0;
+  const CurvingResult result = CurveMesh(mesh, parameters);
+  EXPECT_EQ(result.SplitEars, 0u);
+  EXPECT_EQ(result.EarCorners, 1u);
+  EXPECT_EQ(result.Mesh.Cells.size(), mesh.NumberOfCells());
+  EXPECT_TRUE(result.Valid);
+  EXPECT_EQ(result.CornerAngleBound, 20.0); // the linear mesh's smallest angle is larger (45)
+  for (std::size_t c = 0; c < result.Mesh.Cells.size(); ++c)
+    EXPECT_GE(testing::SampledCornerAngle(result.Mesh.Cell(c)), 20.0 - testing::kCornerAngleTolerance) << c;
+  // A bound above the linear mesh's smallest angle keeps that angle instead.
+  parameters.MinimumCornerAngle = 60.0;
+  EXPECT_NEAR(CurveMesh(mesh, parameters).CornerAngleBound, 45.0, 1e-9);
+  parameters.MinimumCornerAngle = 180.0;
+  EXPECT_THROW(CurveMesh(mesh, parameters), std::invalid_argument);
+}
+
 TEST(BezierCurver, LocatorFindsEveryCellCentre)
 {
   const SimplexMesh linear = testing::ForegroundMesh(MeshLabelImage(testing::MakeDisc(40, 15.2), {}).Mesh);

@@ -85,6 +85,24 @@ TEST(CurverPropertiesCheck, WithoutTheBoundSomeCellsFallBelowTheScaledJacobian)
   EXPECT_GT(below, 0) << "no image of the sample has a cell below the scaled Jacobian without the bound";
 }
 
+/// The corner angle check can fail: with the curver's corner bound switched off (and ears split,
+/// as they then are), some of the same images have a curved corner below the decimation's angle.
+TEST(CurverPropertiesCheck, WithoutTheBoundSomeCornersFallBelowTheAngle)
+{
+  int below = 0;
+  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + 4 * kImagesPerShard && below == 0; ++seed)
+  {
+    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
+      testing::DrawDecimationParameters(seed, 2, mesher), testing::DrawSmoothness(seed), nullptr,
+      testing::kCurvedScaledJacobian, 0.0);
+    for (const std::string& line : violated)
+      below += line.find("corner angle") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_GT(below, 0) << "no image of the sample has a corner below the angle without the bound";
+}
+
 /// Seeds that once failed a scan (labelmesher_property_scan --curve), with the
 /// cause fixed: curves leaving a vertex within 0.01 voxel of each other's
 /// direction crossed below the polylines' resolution (smooth 104341, 112312;

@@ -21,7 +21,8 @@ Smoothness DrawSmoothness(std::uint64_t seed)
 }
 
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
-  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run, double curverScaledJacobian)
+  const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run, double curverScaledJacobian,
+  double curverCornerAngle)
 {
   std::vector<std::string> violated;
   auto fail = [&violated](const std::string& what) { violated.push_back(what); };
@@ -36,6 +37,7 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
   parameters.Bounds.ImageToMesh = mesher.ImageToMeshDistance;
   parameters.Bounds.MeshToImage = mesher.MeshToImageDistance;
   parameters.MinimumScaledJacobian = curverScaledJacobian;
+  parameters.MinimumCornerAngle = curverCornerAngle < 0.0 ? decimation.MinimumAngle : curverCornerAngle;
   try
   {
     out.Linear = ForegroundMesh(DecimateMesh(image, MeshLabelImage(image, mesher).Mesh, decimation).Mesh);
@@ -71,9 +73,22 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
     }
   }
 
+  // Corner angles: the linear mesh's bound, between tangents measured from the cell's own map.
+  for (std::size_t c = 0; c < result.Mesh.Cells.size(); ++c)
+  {
+    const double angle = SampledCornerAngle(result.Mesh.Cell(c));
+    if (angle < decimation.MinimumAngle - kCornerAngleTolerance)
+    {
+      fail("cell " + std::to_string(c) + ": corner angle " + std::to_string(angle) + " degrees below " +
+        std::to_string(decimation.MinimumAngle));
+      break;
+    }
+  }
+
   // Continuity at every joint, as far as the pieces' scales promise it.
   const JointContinuity joints =
-    MeasureJointContinuity(result.Linear, result.Mesh, parameters.Border, smoothness, result.Pieces);
+    MeasureJointContinuity(result.Linear, result.Mesh, parameters.Border, smoothness, result.Pieces,
+      parameters.MinimumCornerAngle > 0.0);
   if (!(joints.FirstDerivativeMismatch < 1e-9) || !(joints.SecondDerivativeMismatch < 1e-9))
   {
     std::ostringstream what;

@@ -46,10 +46,13 @@ constexpr double kCurvedScaledJacobian = 0.1;
 /// receives the meshes and the pixel accuracy of both. `curverScaledJacobian`
 /// is what the curver is asked for (kCurvedScaledJacobian is asserted whatever
 /// it is: 0 switches the curver's bound off, which the tests use to show the
-/// check can fail).
+/// check can fail). Likewise `curverCornerAngle` (negative: the decimation's
+/// MinimumAngle, what `labelmesher curve` asks): every corner angle of the
+/// curved cells, measured from points evaluated along the edges, is asserted
+/// at least the decimation's MinimumAngle whatever the curver is asked.
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run = nullptr,
-  double curverScaledJacobian = kCurvedScaledJacobian);
+  double curverScaledJacobian = kCurvedScaledJacobian, double curverCornerAngle = -1.0);
 
 } // namespace testing
 } // namespace labelmesher

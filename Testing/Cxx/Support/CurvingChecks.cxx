@@ -73,8 +73,38 @@ double SampledJacobianRatio(const CubicTriangle& triangle, int n)
   return maximum > 0.0 ? minimum / maximum : 0.0;
 }
 
+double SampledCornerAngle(const CubicTriangle& triangle)
+{
+  // Along an edge from its corner, P(s) - P(0) = a s + b s^2 + c s^3, so
+  // (4 (P(t) - P(0)) - (P(2t) - P(0))) / (2t) = a - 2 c t^2: the tangent a to O(t^2).
+  constexpr double t = 1e-4;
+  auto along = [&triangle](int corner, int toward, double s) {
+    double b[3] = { 0.0, 0.0, 0.0 };
+    b[corner] += 1.0 - s;
+    b[toward] += s;
+    return EvaluateCubicTriangle(triangle, b[0], b[1], b[2]);
+  };
+  double smallest = 180.0;
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    const Point2 p = along(corner, corner, 0.0);
+    Point2 tangent[2];
+    for (int e = 0; e < 2; ++e)
+    {
+      const int toward = (corner + 1 + e) % 3;
+      const Point2 near = along(corner, toward, t), far = along(corner, toward, 2.0 * t);
+      for (int k = 0; k < 2; ++k)
+        tangent[e][k] = (4.0 * (near[k] - p[k]) - (far[k] - p[k])) / (2.0 * t);
+    }
+    const double cross = tangent[0][0] * tangent[1][1] - tangent[0][1] * tangent[1][0];
+    const double dot = tangent[0][0] * tangent[1][0] + tangent[0][1] * tangent[1][1];
+    smallest = std::min(smallest, std::atan2(std::abs(cross), dot) * 180.0 / 3.14159265358979323846);
+  }
+  return smallest;
+}
+
 JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved, const Box2& border,
-  Smoothness smoothness, const std::vector<CurvePiece>& pieces)
+  Smoothness smoothness, const std::vector<CurvePiece>& pieces, bool earCorners)
 {
   std::map<std::pair<std::int64_t, std::int64_t>, double> scales;
   for (const CurvePiece& piece : pieces)
@@ -84,7 +114,10 @@ JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMe
     return it == scales.end() ? 1.0 : it->second;
   };
   JointContinuity result;
-  for (const InterfaceChain& chain : ExtractInterfaceChains(linear, border))
+  std::vector<InterfaceChain> chains = ExtractInterfaceChains(linear, border);
+  if (earCorners)
+    chains = BreakChainsAt(chains, EarVertices(linear, chains));
+  for (const InterfaceChain& chain : chains)
   {
     const std::size_t n = chain.Vertices.size();
     for (std::int64_t v : chain.Vertices)

@@ -27,6 +27,11 @@ double SampledMinimumJacobian(const CubicTriangle& triangle, int n = 24);
 /// The smallest over the largest det J at the same samples: at least the true min det J / max
 /// det J, so at least any certified lower bound of it (JacobianBounds::ScaledJacobian).
 double SampledJacobianRatio(const CubicTriangle& triangle, int n = 24);
+/// The smallest angle between the tangents of two edges at a corner, degrees, each tangent taken
+/// from points evaluated along its edge (not from the control points), accurate to about 1e-7
+/// degrees on cells of up to a few hundred voxels: kCornerAngleTolerance covers it.
+double SampledCornerAngle(const CubicTriangle& triangle);
+constexpr double kCornerAngleTolerance = 1e-6;
 
 struct JointContinuity
 {
@@ -49,8 +54,10 @@ struct JointContinuity
 /// tangents) or C2 (first and second derivatives) where both pieces at the
 /// joint are at scale 1 in `pieces` (CurvePieces.h; edges not listed count as
 /// scale 1), unit tangents where both are curved, nothing where one is straight.
+/// `earCorners`: the chains turn at the vertices of ears (the curver's corner
+/// angle bound on: BoundaryEars.h), which are then no joints.
 JointContinuity MeasureJointContinuity(const SimplexMesh& linear, const CurvedMesh& curved,
-  const Box2& border, Smoothness smoothness, const std::vector<CurvePiece>& pieces = {});
+  const Box2& border, Smoothness smoothness, const std::vector<CurvePiece>& pieces = {}, bool earCorners = false);
 
 } // namespace testing
 } // namespace labelmesher

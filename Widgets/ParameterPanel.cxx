@@ -131,7 +131,7 @@ ParameterPanel::ParameterPanel(QWidget* parent)
   this->CurveBox->setToolTip(tr("2D images: turn the mesh into cubic Bezier triangles whose interfaces "
                                 "follow the image smoothly. Guarantee: every curved cell valid (Bernstein "
                                 "bound of its Jacobian), both distance bounds, no crossing interfaces, "
-                                "the topology kept. Saved as .vtu or .vtk only."));
+                                "the topology kept. Saved as .vtu, .vtk or .msh only."));
   form->addRow(QString(), this->CurveBox);
 
   this->SmoothnessBox = new QComboBox(this);

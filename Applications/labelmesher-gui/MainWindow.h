@@ -10,7 +10,7 @@
  * quality (AngleHistogram and the CLI's own summary text), save the mesh in any
  * of the CLI's formats and the picture as PNG. A 2D image can be curved
  * (vtkBezierCurver): the view then shows the cubic Bezier cells, the summary
- * is the CLI's curve report, and the mesh is saved as .vtu or .vtk (the formats
+ * is the CLI's curve report, and the mesh is saved as .vtu, .vtk or .msh (the formats
  * that hold Bezier cells); the histogram stays that of the linear mesh the
  * curves were made from (its corners are the curved cells'). The public methods are what the
  * menus and buttons call, so a test drives the window exactly as a user does.
@@ -67,7 +67,7 @@ public:
   void cancelMeshing();
   bool isMeshing() const;
   /// Writes the shown mesh; the format is the extension's (.vtu, .vtk, .msh, .inp, .mesh, .vtp,
-  /// .stl, .obj; a curved mesh .vtu or .vtk only), the file whole or not at all.
+  /// .stl, .obj; a curved mesh .vtu, .vtk or .msh only), the file whole or not at all.
   bool saveMesh(const QString& path);
   /// Writes the view as PNG, whole or not at all.
   bool savePicture(const QString& path);

@@ -181,7 +181,7 @@ const std::vector<Option>& Options()
       "the interfaces between materials (mesh only):\n"
       "  .vtp  VTK XML         .stl  binary STL (3D)\n"
       "  .obj  Wavefront OBJ\n"
-      "curve writes .vtu or .vtk (Bezier cells)",
+      "curve writes .vtu or .vtk (Bezier cells) or .msh (10-node triangles)",
       [](Reading& r, const std::string& v) { r.Args.Outputs.push_back(v); } },
     { nullptr, "--msh-version", "4.1|2.2", false, "Gmsh file version                         [default 4.1]",
       [](Reading& r, const std::string& v) {
@@ -212,7 +212,8 @@ const std::vector<Option>& Options()
       [](Reading& r, const std::string& v) { r.Args.Report = v; } },
     { nullptr, "--min-angle", "DEG", false,
       "smallest angle the decimator may create, degrees:\n"
-      "(0, " + ProvenBound(3) + "] in 3D, (0, " + ProvenBound(2) + "] in 2D                [default 15]",
+      "(0, " + ProvenBound(3) + "] in 3D, (0, " + ProvenBound(2) + "] in 2D                [default 15];\n"
+      "curve: also every curved cell's corner angle",
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
     { nullptr, "--no-decimate", nullptr, false,
       "keep the initial mesh (angles >= " + ProvenBound(3) + " 3D, " + ProvenBound(2) + " 2D)",
@@ -449,7 +450,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     if (args.Command == "curve" && !labelmesher::io::HoldsCurvedCells(*format))
     {
-      throw UsageError("output '" + output + "': curved (Bezier) cells can be written as .vtu or .vtk only");
+      throw UsageError("output '" + output + "': curved (cubic) cells can be written as .vtu, .vtk or .msh only");
     }
     if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=
       args.Outputs.begin() + static_cast<std::ptrdiff_t>(i))

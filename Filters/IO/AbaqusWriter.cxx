@@ -3,6 +3,7 @@
 #include "AbaqusWriter.h"
 
 #include "ExportMesh.h"
+#include "SafeFile.h"
 #include "TextOut.h"
 
 #include <algorithm>
@@ -72,6 +73,8 @@ const char* ElementType(const ExportMesh& mesh)
 
 void WriteAbaqus(const ExportMesh& mesh, std::ostream& out)
 {
+  if (mesh.Order != 1)
+    throw WriteError("Abaqus .inp has no cubic triangle: write the curved mesh as .msh, .vtu or .vtk");
   TextOut text(out);
   const std::vector<std::string> setNames = MaterialSetNames(mesh);
   text.Text("*HEADING\nLabelMesher mesh: ").Int(static_cast<std::int64_t>(mesh.Points.size())).Text(" nodes, ")

@@ -65,6 +65,49 @@ void GroupRuns(const std::vector<Key>& sortedKeys, std::vector<Key>& keys, std::
   }
 }
 
+/// The cubic Bezier triangles' control points (VTK order: corners, two per edge, the centre) moved
+/// to the Lagrange nodes of the same cubic map, at the barycentric points (i, j, k) / 3. A point
+/// on an edge depends on that edge's four control points alone, so cells sharing the edge give it
+/// the same position: the Lagrange mesh is as conforming as the Bezier one, and the two describe
+/// the same curved cells exactly (degree 3 both ways).
+void BezierToLagrange(vtkUnstructuredGrid* mesh, std::vector<std::array<double, 3>>& points)
+{
+  const std::vector<std::array<double, 3>> control = points;
+  auto at = [&control](vtkIdType id) -> const std::array<double, 3>& { return control[static_cast<std::size_t>(id)]; };
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    if (ids->GetNumberOfIds() != 10)
+    {
+      throw WriteError("a Bezier triangle of degree other than 3: only cubic ones can be written");
+    }
+    static constexpr int Edge[3][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 } };
+    for (int e = 0; e < 3; ++e)
+    {
+      // B(t) = (1-t)^3 a + 3 (1-t)^2 t c1 + 3 (1-t) t^2 c2 + t^3 b at t = 1/3 and 2/3.
+      const auto& a = at(ids->GetId(Edge[e][0]));
+      const auto& b = at(ids->GetId(Edge[e][1]));
+      const auto& c1 = at(ids->GetId(3 + 2 * e));
+      const auto& c2 = at(ids->GetId(4 + 2 * e));
+      for (int k = 0; k < 3; ++k)
+      {
+        points[static_cast<std::size_t>(ids->GetId(3 + 2 * e))][k] = (8 * a[k] + 12 * c1[k] + 6 * c2[k] + b[k]) / 27.0;
+        points[static_cast<std::size_t>(ids->GetId(4 + 2 * e))][k] = (a[k] + 6 * c1[k] + 12 * c2[k] + 8 * b[k]) / 27.0;
+      }
+    }
+    // The centre (1/3, 1/3, 1/3): weights 1 at the corners, 3 at the edge points, 6 at the centre, over 27.
+    std::array<double, 3> centre{ 0.0, 0.0, 0.0 };
+    for (int slot = 0; slot < 10; ++slot)
+    {
+      const double w = slot < 3 ? 1.0 : (slot < 9 ? 3.0 : 6.0);
+      for (int k = 0; k < 3; ++k)
+        centre[k] += w * at(ids->GetId(slot))[k] / 27.0;
+    }
+    points[static_cast<std::size_t>(ids->GetId(9))] = centre;
+  }
+}
+
 } // namespace
 
 ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, const MaterialTable& table)
@@ -78,11 +121,12 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
     throw WriteError("the mesh has no Material cell array");
   }
   int cellType = nCells > 0 ? mesh->GetCellType(0) : VTK_TETRA;
-  if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE)
+  if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE && cellType != VTK_BEZIER_TRIANGLE)
   {
-    throw WriteError("only linear tetrahedra and triangles can be written in this format (curved meshes: .vtu or .vtk)");
+    throw WriteError("only linear tetrahedra and triangles, and cubic Bezier triangles, can be written");
   }
   out.Dimension = cellType == VTK_TETRA ? 3 : 2;
+  out.Order = cellType == VTK_BEZIER_TRIANGLE ? 3 : 1;
   const int nodes = out.NodesPerCell();
 
   out.Points.resize(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
@@ -90,11 +134,15 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
   {
     mesh->GetPoint(p, out.Points[static_cast<std::size_t>(p)].data());
   }
+  if (out.Order == 3)
+  {
+    BezierToLagrange(mesh, out.Points);
+  }
 
   std::vector<std::int32_t> labels(static_cast<std::size_t>(nCells));
   for (vtkIdType c = 0; c < nCells; ++c)
   {
-    if (mesh->GetCellType(c) != cellType)
+    if (mesh->GetCellType(c) != cellType) // (BezierToLagrange has checked the cubic ones' ten points)
     {
       throw WriteError("the mesh mixes cell types; only all-tetrahedra or all-triangle meshes can be written in this format");
     }

@@ -35,6 +35,9 @@ struct ExportMesh
   using Pair = std::pair<std::int32_t, std::int32_t>; ///< smaller label first
 
   int Dimension = 3; ///< 3: tetrahedra, interface triangles; 2: triangles, interface segments
+  /// 1: linear cells; 3 (2D only): cubic triangles, ten Lagrange nodes each in VTK's (and Gmsh's)
+  /// order, corners, then two per edge (0-1, 1-2, 2-0) from its first corner, then the centre.
+  int Order = 1;
   std::vector<std::array<double, 3>> Points;
   /// Cells: NodesPerCell() point indices each, sorted by material.
   std::vector<std::int64_t> Cells;
@@ -50,7 +53,7 @@ struct ExportMesh
   /// of planar formats drop it); otherwise -1.
   int FlatAxis = -1;
 
-  int NodesPerCell() const { return this->Dimension + 1; }
+  int NodesPerCell() const { return this->Order == 3 ? 10 : this->Dimension + 1; }
   int NodesPerFace() const { return this->Dimension; }
   std::size_t NumberOfCells() const { return this->CellMaterial.size(); }
   std::size_t NumberOfFaces() const { return this->Faces.size() / static_cast<std::size_t>(this->NodesPerFace()); }

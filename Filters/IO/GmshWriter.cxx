@@ -15,10 +15,12 @@ namespace io
 namespace
 {
 
-constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4;
+constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshCubicTriangle = 21;
 
 int CellType(const ExportMesh& mesh)
 {
+  if (mesh.Order == 3)
+    return GmshCubicTriangle; // 10 nodes in VTK's order
   return mesh.Dimension == 3 ? GmshTetrahedron : GmshTriangle;
 }
 int FaceType(const ExportMesh& mesh)

@@ -3,6 +3,7 @@
 #include "MeditWriter.h"
 
 #include "ExportMesh.h"
+#include "SafeFile.h"
 #include "TextOut.h"
 
 #include <algorithm>
@@ -28,6 +29,8 @@ std::int64_t MeditInterfaceReference(const ExportMesh& mesh, std::size_t index)
 
 void WriteMedit(const ExportMesh& mesh, std::ostream& out)
 {
+  if (mesh.Order != 1)
+    throw WriteError("Medit .mesh has no cubic triangle: write the curved mesh as .msh, .vtu or .vtk");
   TextOut text(out);
   const bool planar = mesh.Dimension == 2 && mesh.FlatAxis >= 0;
   const std::vector<std::size_t> axes = WrittenAxes(mesh);

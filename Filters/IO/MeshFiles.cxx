@@ -101,7 +101,7 @@ std::string KnownExtensions()
 
 bool HoldsCurvedCells(MeshFormat format)
 {
-  return format == MeshFormat::Vtu || format == MeshFormat::LegacyVtk;
+  return format == MeshFormat::Vtu || format == MeshFormat::LegacyVtk || format == MeshFormat::Gmsh;
 }
 
 MeshFileWriter::MeshFileWriter(

@@ -54,7 +54,8 @@ enum class MeshFormat
 std::optional<MeshFormat> FormatOfPath(const std::string& path);
 /// ".vtu, .vtk, .msh, .inp, .mesh, .vtp, .stl, .obj"
 std::string KnownExtensions();
-/// True for the formats that hold curved (Bezier) cells: .vtu, .vtk.
+/// True for the formats that hold curved (cubic) cells: .vtu, .vtk (Bezier cells) and .msh
+/// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);
 
 struct WriteOptions

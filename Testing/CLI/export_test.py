@@ -12,6 +12,7 @@ import json
 import os
 import resource
 import signal
+import subprocess
 import sys
 
 import numpy as np
@@ -100,6 +101,68 @@ def case_export_formats_2d():
     cli.expect_failure(cli.run("mesh", png, "-o", cli.path("disks.stl")), "segments")
     assert not os.path.exists(cli.path("disks.stl"))
     print("OK: 2D formats round trip")
+
+
+def bezier_triangle_point(control, u, v, w):
+    """The cubic Bezier triangle with VTK's ten control points (corners, two per edge from its
+    first corner, centre) at barycentric (u, v, w): Bernstein polynomials, written out here."""
+    index = {(3, 0, 0): 0, (0, 3, 0): 1, (0, 0, 3): 2, (2, 1, 0): 3, (1, 2, 0): 4, (0, 2, 1): 5,
+             (0, 1, 2): 6, (1, 0, 2): 7, (2, 0, 1): 8, (1, 1, 1): 9}
+    fact = [1, 1, 2, 6]
+    point = np.zeros(3)
+    for (i, j, k), slot in index.items():
+        point += 6 / (fact[i] * fact[j] * fact[k]) * u ** i * v ** j * w ** k * control[slot]
+    return point
+
+
+def case_export_curved_msh():
+    """`curve` writes Gmsh's 10-node triangles: read back by meshio with every material, accepted
+    by gmsh -check, and each node on the .vtu's Bezier cell at its Lagrange position."""
+    disk = np.zeros((30, 40), dtype=np.uint8)
+    y, x = np.mgrid[0:30, 0:40]
+    disk[(x - 12.5) ** 2 + (y - 14.5) ** 2 <= 81] = 3
+    disk[(x - 28.5) ** 2 + (y - 14.5) ** 2 <= 49] = 7
+    png = cli.write_png("curved.png", disk)
+    vtu, msh, report = cli.path("curved.vtu"), cli.path("curved.msh"), cli.path("curved.json")
+    result = cli.run("curve", png, "-o", vtu, "-o", msh, "--report", report)
+    assert result.returncode == 0, result.stderr
+    # The .vtu through VTK (meshio 5 does not read Bezier cells), the .msh through meshio.
+    grid = cli.read_mesh(vtu)
+    assert set(cli.vtk_to_numpy(grid.GetCellTypesArray()).tolist()) == {cli.VTK_BEZIER_TRIANGLE}
+    control = cli.vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    materials = cli.vtk_to_numpy(grid.GetCellData().GetArray("Material")).astype(np.int64)
+    points = cli.vtk_to_numpy(grid.GetPoints().GetData())
+    meshio = __import__("meshio")
+    mesh = meshio.read(msh)
+    blocks = [(i, c) for i, c in enumerate(mesh.cells) if c.type == "triangle10"]
+    assert blocks and len(blocks) == len(mesh.cells), [c.type for c in mesh.cells]
+    cells = np.concatenate([c.data for _, c in blocks])
+    tags = np.concatenate([mesh.cell_data["gmsh:physical"][i] for i, _ in blocks]).astype(np.int64)
+    assert len(cells) == len(control), (len(cells), len(control))
+    assert sorted(tags.tolist()) == sorted(materials.tolist()), "materials differ"
+    assert {int(mesh.field_data[n][0]) for n in ("label_3", "label_7")} == {3, 7}, mesh.field_data
+    # Same cells in the same order within a material (both files group by material, stably).
+    order = np.argsort(materials, kind="stable")
+    nodes = [(3, 0, 0), (0, 3, 0), (0, 0, 3), (2, 1, 0), (1, 2, 0), (0, 2, 1), (0, 1, 2), (1, 0, 2), (2, 0, 1), (1, 1, 1)]
+    worst = 0.0
+    for written, source in zip(cells, order):
+        cp = points[control[source]]
+        for slot, (i, j, k) in enumerate(nodes):
+            want = bezier_triangle_point(cp, i / 3, j / 3, k / 3)
+            worst = max(worst, float(np.linalg.norm(mesh.points[written[slot]] - want)))
+    assert worst < 1e-9, "a Lagrange node is %g off its Bezier cell" % worst
+    # Conforming: every edge node shared by the two cells of an inner edge.
+    edges = {}
+    for cell in cells:
+        for a, b, p, q in ((0, 1, 3, 4), (1, 2, 5, 6), (2, 0, 7, 8)):
+            key = (min(cell[a], cell[b]), max(cell[a], cell[b]))
+            mid = (cell[p], cell[q]) if cell[a] < cell[b] else (cell[q], cell[p])
+            assert edges.setdefault(key, mid) == mid, "edge %s has two sets of nodes" % (key,)
+    check = subprocess.run(["gmsh", msh, "-check"], capture_output=True, text=True)
+    assert check.returncode == 0 and "Error" not in check.stdout + check.stderr, (check.stdout + check.stderr)[-500:]
+    # Formats without cubic triangles are refused before meshing.
+    cli.expect_failure(cli.run("curve", png, "-o", cli.path("curved.mesh")), ".vtu, .vtk or .msh only", 2)
+    print("OK: curved mesh as 10-node triangles, %d cells, nodes within %.1e" % (len(cells), worst))
 
 
 def case_stl_per_interface():
@@ -230,7 +293,7 @@ def case_bad_output_paths():
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "-o", cli.path("m.vtu")), "twice", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "--report", cli.path("m.vtu")), "overwrite", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.msh"), "--msh-version", "3"), "4.1 or 2.2", 2)
-    cli.expect_failure(cli.run("curve", image, "-o", cli.path("m.msh")), ".vtu or .vtk only", 2)
+    cli.expect_failure(cli.run("curve", image, "-o", cli.path("m.inp")), ".vtu, .vtk or .msh only", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "--report", cli.path("missing/r.json")),
                        "does not exist")
     print("OK: bad output paths fail first")

@@ -425,10 +425,12 @@ private slots:
     if (!Folder.autoRemove())
       QVERIFY(picture.save(Folder.filePath("curved.png")));
 
-    // Saved as the CLI writes it: .vtu/.vtk only, read back with the same Bezier cells.
-    QVERIFY(!Window->saveMesh(Folder.filePath("curved.msh")));
-    QVERIFY(errors.last().at(0).toString().contains(".vtu or .vtk"));
-    QVERIFY(!QFile::exists(Folder.filePath("curved.msh")));
+    // Saved as the CLI writes it: .vtu/.vtk (read back with the same Bezier cells) or .msh (Gmsh's
+    // 10-node triangles); formats without cubic cells refused.
+    QVERIFY(!Window->saveMesh(Folder.filePath("curved.inp")));
+    QVERIFY(errors.last().at(0).toString().contains(".vtu, .vtk or .msh"));
+    QVERIFY(!QFile::exists(Folder.filePath("curved.inp")));
+    QVERIFY(Window->saveMesh(Folder.filePath("curved.msh")));
     QVERIFY(Window->saveMesh(Folder.filePath("curved.vtu")));
     QCOMPARE(Window->curveReport()->Linear.Outputs.size(), std::size_t{ 1 });
     vtkNew<vtkXMLUnstructuredGridReader> reader;

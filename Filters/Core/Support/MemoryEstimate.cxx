@@ -29,11 +29,13 @@ constexpr double kFixedBytes = 25.0 * 1024 * 1024;
 /// while blocks go on and the last pass, per cell entering that pass; the share
 /// of the initial cells that enter it (0.13-0.18 measured at 1M-cell blocks);
 /// the image boundary, its certificates' neighbourhoods and flags, per face.
-constexpr double kBlockBytesPerCell = 66.0;
-constexpr double kOutputBytesPerCell = 40.0;
-constexpr double kLastPassBytesPerCell = 140.0;
+/// Refitted on 2026-12-05 (labels stored in one byte, border passes, pages
+/// handed back per block): the six shared volumes at 0.98-1.13x their peak.
+constexpr double kBlockBytesPerCell = 50.0;
+constexpr double kOutputBytesPerCell = 30.0;
+constexpr double kLastPassBytesPerCell = 105.0;
 constexpr double kLastPassShare = 0.18;
-constexpr double kStreamedBytesPerFace = 64.0;
+constexpr double kStreamedBytesPerFace = 48.0;
 
 double ImageBytes(const LabelImage& image)
 {

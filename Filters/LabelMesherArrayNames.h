@@ -97,6 +97,7 @@ inline constexpr char StraightenedForScaledJacobian[] = "StraightenedForScaledJa
 inline constexpr char CornerAngleBound[] = "CornerAngleBound";
 inline constexpr char CellsBelowCornerAngle[] = "CellsBelowCornerAngle"; ///< after the rounds, before straightening
 inline constexpr char StraightenedForCornerAngle[] = "StraightenedForCornerAngle"; ///< 1: every curve made straight
+inline constexpr char StraightenedForValidity[] = "StraightenedForValidity"; ///< 1: every curve made straight, cells left invalid
 inline constexpr char InvalidBeforeUntangling[] = "InvalidBeforeUntangling";
 inline constexpr char InvalidCells[] = "InvalidCells";
 inline constexpr char UntanglingSteps[] = "UntanglingSteps";

@@ -269,6 +269,7 @@ void AddCurvingCounts(vtkFieldData* fd, const labelmesher::CurvingResult& result
   AddScalarField(fd, arrays::CornerAngleBound, result.CornerAngleBound);
   AddScalarField(fd, arrays::CellsBelowCornerAngle, static_cast<double>(result.CellsBelowCornerAngle));
   AddScalarField(fd, arrays::StraightenedForCornerAngle, result.StraightenedForCornerAngle ? 1.0 : 0.0);
+  AddScalarField(fd, arrays::StraightenedForValidity, result.StraightenedForValidity ? 1.0 : 0.0);
 }
 
 /// Pass 5 (field data): the curves' distances, crossings and topology against the image.

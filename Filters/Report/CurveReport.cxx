@@ -72,6 +72,7 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.CornerAngleBound = FieldValue(fd, arrays::CornerAngleBound).value_or(0.0);
   r.CellsBelowCornerAngle = FieldCount(fd, arrays::CellsBelowCornerAngle);
   r.StraightenedForCornerAngle = FieldCount(fd, arrays::StraightenedForCornerAngle) != 0;
+  r.StraightenedForValidity = FieldCount(fd, arrays::StraightenedForValidity) != 0;
   r.InvalidBeforeUntangling = FieldCount(fd, arrays::InvalidBeforeUntangling);
   r.InvalidCells = FieldCount(fd, arrays::InvalidCells);
   r.ValidityMeasured = fd->GetArray(arrays::InvalidCells) != nullptr;
@@ -176,7 +177,8 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
       << " curved edges, " << r.SplitEars << " ears split, " << r.EarCorners << " corners at ears)\n";
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
       << r.InvalidBeforeUntangling << " invalid before untangling, " << r.InvalidCells
-      << " after; " << r.UntanglingSteps << " load steps)\n";
+      << " after; " << r.UntanglingSteps << " load steps"
+      << (r.StraightenedForValidity ? "; every curve made straight after the rounds" : "") << ")\n";
   out << "Pieces shortened: " << r.ShortenedPieces << " of " << r.CurvedEdges << " (" << r.StraightenedPieces
       << " straight; " << r.PiecesShortenedForBounds << " for the distance bounds, " << r.PiecesShortenedForValidity
       << " for validity and the scaled Jacobian; " << r.UntanglingRounds << " untangling rounds)\n";
@@ -333,6 +335,7 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("corner_angle_bound_holds").Bool(r.CornerAnglesHold());
   j.Key("cells_below_corner_angle_bound").Integer(r.CellsBelowCornerAngle);
   j.Key("straightened_for_corner_angle").Bool(r.StraightenedForCornerAngle);
+  j.Key("straightened_for_validity").Bool(r.StraightenedForValidity);
   j.Key("cells_below_scaled_jacobian_bound").Integer(r.CellsBelowScaledJacobian);
   j.Key("straightened_for_scaled_jacobian").Bool(r.StraightenedForScaledJacobian);
   j.Key("minimum_jacobian").Number(r.MinimumJacobian);

@@ -76,6 +76,7 @@ struct CurveReport
   double CornerAngleBound = 0.0;
   long long CellsBelowCornerAngle = 0;
   bool StraightenedForCornerAngle = false;
+  bool StraightenedForValidity = false; ///< every curve made straight: the rounds left cells invalid
   /// Every corner angle is at least the bound (to within rounding: a straight cell's corners are
   /// its angles, recomputed from the control points).
   bool CornerAnglesHold() const

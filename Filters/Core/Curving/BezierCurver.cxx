@@ -334,6 +334,7 @@ CurvingResult CurveMesh(
   std::set<std::size_t> shortenedForValidity;
   std::set<std::size_t> shortenedForBounds;
   std::map<std::size_t, int> invalidRounds;
+  bool invalidAfterRounds = false;
   for (int round = 0;; ++round)
   {
     if (bounded)
@@ -375,24 +376,25 @@ CurvingResult CurveMesh(
     if (untangled.Valid)
       failing = CellsBelowQuality(result.Mesh, parameters.MinimumScaledJacobian, result.CornerAngleBound,
         belowScaledJacobian, belowCornerAngle);
-    // Past the rounds asked for, a valid mesh whose cells are below the bound gets a few more,
-    // each making the curves around them straight at once (halving again would not end).
+    // Past the rounds asked for, cells still failing get a few more, each making the curves
+    // around them straight at once (halving again would not end). A valid mesh can turn invalid
+    // in the last of them (a halved curve squeezes a neighbour): that takes them too.
     const bool pastRounds = round + 1 >= parameters.MaximumShorteningRounds;
-    if (pastRounds && untangled.Valid)
+    if (pastRounds)
       for (const FailingCell& f : failing)
         invalidRounds[f.Cell] = std::max(invalidRounds[f.Cell], 1);
-    if (failing.empty() || (pastRounds && !untangled.Valid) ||
-      round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
+    if (failing.empty() || round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
       !ShortenPiecesOfCells(result.Linear, failing, invalidRounds, pieces, shortenedForValidity))
     {
       result.CellsBelowScaledJacobian = belowScaledJacobian;
       result.CellsBelowCornerAngle = belowCornerAngle;
+      invalidAfterRounds = !untangled.Valid;
       break;
     }
   }
-  // The last resort of the quality bounds: the straight cells of the linear mesh (scaled Jacobian 1,
-  // corner angles the linear angles).
-  if (result.CellsBelowScaledJacobian > 0 || result.CellsBelowCornerAngle > 0)
+  // The last resort: the straight cells of the linear mesh (valid, scaled Jacobian 1, corner
+  // angles the linear angles).
+  if (result.CellsBelowScaledJacobian > 0 || result.CellsBelowCornerAngle > 0 || invalidAfterRounds)
   {
     for (CurvePiece& piece : pieces)
       if (piece.Scale > 0.0)
@@ -404,6 +406,7 @@ CurvingResult CurveMesh(
     UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling);
     result.StraightenedForScaledJacobian = result.CellsBelowScaledJacobian > 0;
     result.StraightenedForCornerAngle = result.CellsBelowCornerAngle > 0;
+    result.StraightenedForValidity = invalidAfterRounds;
   }
   result.PiecesShortenedForBounds = shortenedForBounds.size();
   result.PiecesShortenedForValidity = shortenedForValidity.size();

@@ -63,7 +63,9 @@ struct CurvingParameters
   /// >= 0 to be enforced), and the polyline tolerance that certifies them.
   CurveBounds Bounds{ -1.0, -1.0, 1.0 / 256.0 };
   /// Most untangling rounds, each after shortening the pieces of the cells the
-  /// previous one left invalid (or below MinimumScaledJacobian).
+  /// previous one left invalid (or below MinimumScaledJacobian or MinimumCornerAngle);
+  /// then up to 8 more that straighten those pieces at once, and if cells still
+  /// fail, every curve is made straight (the linear mesh's cells are valid).
   int MaximumShorteningRounds = 8;
   /// Every cell's scaled Jacobian, min det J / max det J certified by the Bernstein coefficients
   /// of det J with subdivision (JacobianBounds::ScaledJacobian, a lower bound of the true ratio),
@@ -129,6 +131,8 @@ struct CurvingResult
   double CornerAngleBound = 0.0;
   std::size_t CellsBelowCornerAngle = 0;
   bool StraightenedForCornerAngle = false;
+  /// Every curve made straight because the rounds left cells invalid (the linear mesh's cells are).
+  bool StraightenedForValidity = false;
   std::vector<StageTiming> Timings;
 };
 

@@ -110,7 +110,11 @@ TEST(CurverPropertiesCheck, WithoutTheBoundSomeCornersFallBelowTheAngle)
 /// sliver stayed invalid with every curve at its corners straight (smooth
 /// 100033: now the curves one ring further out are shortened; smooth 210712:
 /// a cell stayed invalid through all eight rounds while its curves were
-/// halved, now they are straightened from its second invalid round).
+/// halved, now they are straightened from its second invalid round; smooth
+/// 1119662, with the corner angle bound: a cell valid but below the scaled
+/// Jacobian turned invalid in the last round, which ended the rounds; now
+/// invalid cells get the straightening rounds too, and every curve is made
+/// straight if any stays invalid).
 TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
 {
   struct Case
@@ -118,7 +122,7 @@ TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
     bool Boxes;
     std::uint64_t Seed;
   };
-  for (const Case& c : { Case{ false, 100033 }, Case{ false, 104341 }, Case{ false, 112312 }, Case{ false, 210712 },
+  for (const Case& c : { Case{ false, 100033 }, Case{ false, 104341 }, Case{ false, 112312 }, Case{ false, 210712 }, Case{ false, 1119662 },
          Case{ true, 100386 }, Case{ true, 101577 } })
   {
     const testing::RandomLabelImage random = c.Boxes ? testing::GenerateRandomBoxImage(c.Seed, 2, 24)

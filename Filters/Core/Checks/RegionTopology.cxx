@@ -8,7 +8,8 @@
  *
  * Image side (closed voxels, a cubical complex):
  *  - the labels are first copied into a padded volume of compact material
- *    indices (one voxel of background all around, so no bounds checks);
+ *    indices (one voxel of background all around, so no bounds checks), one
+ *    byte per voxel up to 255 materials (a LabelImage);
  *  - chi = V - E + F - C is a streaming count: every lattice vertex, edge,
  *    face and voxel is visited once and counted for each distinct material
  *    among the (8, 4, 2, 1) voxels incident to it. O(voxels), no hashing.
@@ -90,146 +91,149 @@ void ImageTopology(const LabelImage& image, std::map<std::int32_t, TopologyCompa
   const int px = nx + 2, py = ny + 2, pz = is2D ? 1 : nz + 2;
   const std::int64_t sx = 1, sy = px, sz = static_cast<std::int64_t>(px) * py;
   const int kOff = is2D ? 0 : 1;
-  std::vector<std::int32_t> q(static_cast<std::size_t>(sz) * pz, 0);
+  // As narrow as the number of materials allows (LabelImage): at 1024^3 the int32 copy was 4 GiB.
+  LabelImage padded(px, py, pz);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
     {
       image.WithLabels([&](const auto* labels) {
         const auto* src = labels + image.Index(0, j, k);
-        std::int32_t* dst = q.data() + (k + kOff) * sz + (j + 1) * sy + 1;
+        const std::size_t dst = static_cast<std::size_t>((k + kOff) * sz + (j + 1) * sy + 1);
         for (int i = 0; i < nx; ++i)
-          dst[i] = compact(src[i]);
+          padded.SetLabel(dst + static_cast<std::size_t>(i), compact(src[i]));
       });
     }
-  const std::size_t M = labels.size();
-  std::vector<Counts> counts(M);
-  auto Q = [&](int i, int j, int k) -> const std::int32_t* { return q.data() + k * sz + j * sy + i * sx; };
+  padded.WithLabels([&](const auto* q) {
+    const std::size_t M = labels.size();
+    std::vector<Counts> counts(M);
+    auto Q = [&](int i, int j, int k) { return q + k * sz + j * sy + i * sx; };
 
-  // Euler characteristic by streaming counts over lattice elements. Padded
-  // voxel (i, j, k) is image voxel (i-1, j-1, k-1) (k unshifted in 2D).
-  std::int32_t buf[8];
-  if (is2D)
-  {
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i)
-      {
-        const std::int32_t* p = Q(i, j, 0); // pixels (i..i+1, j..j+1)
-        buf[0] = p[0]; buf[1] = p[1]; buf[2] = p[sy]; buf[3] = p[sy + 1];
-        ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].V; });
-        if (i < nx) // edge along x at lattice y = j: pixels (i+1, j..j+1)
-        {
-          buf[0] = p[1]; buf[1] = p[sy + 1];
-          ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].E; });
-        }
-        if (j < ny) // edge along y at lattice x = i: pixels (i..i+1, j+1)
-        {
-          buf[0] = p[sy]; buf[1] = p[sy + 1];
-          ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].E; });
-        }
-        if (i < nx && j < ny && p[sy + 1] != 0)
-          ++counts[p[sy + 1]].F;
-      }
-  }
-  else
-  {
-    for (int k = 0; k <= nz; ++k)
+    // Euler characteristic by streaming counts over lattice elements. Padded
+    // voxel (i, j, k) is image voxel (i-1, j-1, k-1) (k unshifted in 2D).
+    std::int32_t buf[8];
+    if (is2D)
+    {
       for (int j = 0; j <= ny; ++j)
         for (int i = 0; i <= nx; ++i)
         {
-          const std::int32_t* p = Q(i, j, k); // voxels (i..i+1, j..j+1, k..k+1)
-          const std::int32_t v000 = p[0], v100 = p[1], v010 = p[sy], v110 = p[sy + 1],
-                             v001 = p[sz], v101 = p[sz + 1], v011 = p[sz + sy],
-                             v111 = p[sz + sy + 1];
-          if ((v000 | v100 | v010 | v110 | v001 | v101 | v011 | v111) == 0)
-            continue; // nothing incident anywhere in this block
-          buf[0] = v000; buf[1] = v100; buf[2] = v010; buf[3] = v110;
-          buf[4] = v001; buf[5] = v101; buf[6] = v011; buf[7] = v111;
-          ForEachDistinct(buf, 8, [&](std::int32_t m) { ++counts[m].V; });
-          if (i < nx) // x-edge: voxels (i+1, j..j+1, k..k+1)
+          const auto* p = Q(i, j, 0); // pixels (i..i+1, j..j+1)
+          buf[0] = p[0]; buf[1] = p[1]; buf[2] = p[sy]; buf[3] = p[sy + 1];
+          ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].V; });
+          if (i < nx) // edge along x at lattice y = j: pixels (i+1, j..j+1)
           {
-            buf[0] = v100; buf[1] = v110; buf[2] = v101; buf[3] = v111;
-            ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
+            buf[0] = p[1]; buf[1] = p[sy + 1];
+            ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].E; });
           }
-          if (j < ny) // y-edge: voxels (i..i+1, j+1, k..k+1)
+          if (j < ny) // edge along y at lattice x = i: pixels (i..i+1, j+1)
           {
-            buf[0] = v010; buf[1] = v110; buf[2] = v011; buf[3] = v111;
-            ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
+            buf[0] = p[sy]; buf[1] = p[sy + 1];
+            ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].E; });
           }
-          if (k < nz) // z-edge: voxels (i..i+1, j..j+1, k+1)
-          {
-            buf[0] = v001; buf[1] = v101; buf[2] = v011; buf[3] = v111;
-            ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
-          }
-          if (j < ny && k < nz) // x-face: voxels (i..i+1, j+1, k+1)
-          {
-            buf[0] = v011; buf[1] = v111;
-            ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
-          }
-          if (i < nx && k < nz) // y-face: voxels (i+1, j..j+1, k+1)
-          {
-            buf[0] = v101; buf[1] = v111;
-            ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
-          }
-          if (i < nx && j < ny) // z-face: voxels (i+1, j+1, k..k+1)
-          {
-            buf[0] = v110; buf[1] = v111;
-            ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
-          }
-          if (i < nx && j < ny && k < nz && v111 != 0)
-            ++counts[v111].C;
+          if (i < nx && j < ny && p[sy + 1] != 0)
+            ++counts[p[sy + 1]].F;
         }
-  }
+    }
+    else
+    {
+      for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j <= ny; ++j)
+          for (int i = 0; i <= nx; ++i)
+          {
+            const auto* p = Q(i, j, k); // voxels (i..i+1, j..j+1, k..k+1)
+            const std::int32_t v000 = p[0], v100 = p[1], v010 = p[sy], v110 = p[sy + 1],
+                               v001 = p[sz], v101 = p[sz + 1], v011 = p[sz + sy],
+                               v111 = p[sz + sy + 1];
+            if ((v000 | v100 | v010 | v110 | v001 | v101 | v011 | v111) == 0)
+              continue; // nothing incident anywhere in this block
+            buf[0] = v000; buf[1] = v100; buf[2] = v010; buf[3] = v110;
+            buf[4] = v001; buf[5] = v101; buf[6] = v011; buf[7] = v111;
+            ForEachDistinct(buf, 8, [&](std::int32_t m) { ++counts[m].V; });
+            if (i < nx) // x-edge: voxels (i+1, j..j+1, k..k+1)
+            {
+              buf[0] = v100; buf[1] = v110; buf[2] = v101; buf[3] = v111;
+              ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
+            }
+            if (j < ny) // y-edge: voxels (i..i+1, j+1, k..k+1)
+            {
+              buf[0] = v010; buf[1] = v110; buf[2] = v011; buf[3] = v111;
+              ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
+            }
+            if (k < nz) // z-edge: voxels (i..i+1, j..j+1, k+1)
+            {
+              buf[0] = v001; buf[1] = v101; buf[2] = v011; buf[3] = v111;
+              ForEachDistinct(buf, 4, [&](std::int32_t m) { ++counts[m].E; });
+            }
+            if (j < ny && k < nz) // x-face: voxels (i..i+1, j+1, k+1)
+            {
+              buf[0] = v011; buf[1] = v111;
+              ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
+            }
+            if (i < nx && k < nz) // y-face: voxels (i+1, j..j+1, k+1)
+            {
+              buf[0] = v101; buf[1] = v111;
+              ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
+            }
+            if (i < nx && j < ny) // z-face: voxels (i+1, j+1, k..k+1)
+            {
+              buf[0] = v110; buf[1] = v111;
+              ForEachDistinct(buf, 2, [&](std::int32_t m) { ++counts[m].F; });
+            }
+            if (i < nx && j < ny && k < nz && v111 != 0)
+              ++counts[v111].C;
+          }
+    }
 
-  // Components: two-slice scan, 26- (8-) connectivity, union-find on provisional ids.
-  UnionFind uf;
-  std::vector<std::int32_t> materialOf; // provisional id -> compact material
-  const std::size_t slice = static_cast<std::size_t>(px) * py;
-  std::vector<std::int64_t> prev(slice, -1), cur(slice, -1);
-  for (int k = 0; k < nz; ++k)
-  {
-    std::fill(cur.begin(), cur.end(), -1);
-    for (int j = 1; j <= ny; ++j)
-      for (int i = 1; i <= nx; ++i)
-      {
-        const std::int32_t m = *Q(i, j, k + kOff);
-        if (m == 0)
-          continue;
-        const std::size_t s = static_cast<std::size_t>(j) * px + i;
-        std::int64_t id = -1;
-        auto join = [&](std::int64_t other) {
-          if (other < 0 || materialOf[other] != m)
-            return;
-          id = static_cast<std::int64_t>(id < 0 ? uf.Find(static_cast<std::size_t>(other))
-                                                : uf.Unite(static_cast<std::size_t>(id), static_cast<std::size_t>(other)));
-        };
-        join(cur[s - 1]);
-        join(cur[s - px - 1]);
-        join(cur[s - px]);
-        join(cur[s - px + 1]);
-        if (!is2D && k > 0)
-          for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di)
-              join(prev[s + dj * px + di]);
-        if (id < 0)
+    // Components: two-slice scan, 26- (8-) connectivity, union-find on provisional ids.
+    UnionFind uf;
+    std::vector<std::int32_t> materialOf; // provisional id -> compact material
+    const std::size_t slice = static_cast<std::size_t>(px) * py;
+    std::vector<std::int64_t> prev(slice, -1), cur(slice, -1);
+    for (int k = 0; k < nz; ++k)
+    {
+      std::fill(cur.begin(), cur.end(), -1);
+      for (int j = 1; j <= ny; ++j)
+        for (int i = 1; i <= nx; ++i)
         {
-          id = static_cast<std::int64_t>(uf.Add());
-          materialOf.push_back(m);
+          const std::int32_t m = *Q(i, j, k + kOff);
+          if (m == 0)
+            continue;
+          const std::size_t s = static_cast<std::size_t>(j) * px + i;
+          std::int64_t id = -1;
+          auto join = [&](std::int64_t other) {
+            if (other < 0 || materialOf[other] != m)
+              return;
+            id = static_cast<std::int64_t>(id < 0 ? uf.Find(static_cast<std::size_t>(other))
+                                                  : uf.Unite(static_cast<std::size_t>(id), static_cast<std::size_t>(other)));
+          };
+          join(cur[s - 1]);
+          join(cur[s - px - 1]);
+          join(cur[s - px]);
+          join(cur[s - px + 1]);
+          if (!is2D && k > 0)
+            for (int dj = -1; dj <= 1; ++dj)
+              for (int di = -1; di <= 1; ++di)
+                join(prev[s + dj * px + di]);
+          if (id < 0)
+          {
+            id = static_cast<std::int64_t>(uf.Add());
+            materialOf.push_back(m);
+          }
+          cur[s] = id;
         }
-        cur[s] = id;
-      }
-    std::swap(prev, cur);
-  }
-  std::vector<std::size_t> components(M, 0);
-  for (std::size_t id = 0; id < materialOf.size(); ++id)
-    if (uf.IsRoot(id))
-      ++components[materialOf[id]];
+      std::swap(prev, cur);
+    }
+    std::vector<std::size_t> components(M, 0);
+    for (std::size_t id = 0; id < materialOf.size(); ++id)
+      if (uf.IsRoot(id))
+        ++components[materialOf[id]];
 
-  for (std::size_t m = 1; m < M; ++m)
-  {
-    RegionTopology& t = out[labels[m]].Image;
-    t.Components = components[m];
-    t.EulerCharacteristic = counts[m].V - counts[m].E + counts[m].F - counts[m].C;
-  }
+    for (std::size_t m = 1; m < M; ++m)
+    {
+      RegionTopology& t = out[labels[m]].Image;
+      t.Components = components[m];
+      t.EulerCharacteristic = counts[m].V - counts[m].E + counts[m].F - counts[m].C;
+    }
+  });
 }
 
 void MeshTopology(const SimplexMesh& mesh, std::map<std::int32_t, TopologyComparison>& out)

@@ -226,3 +226,30 @@ TEST(RegionTopology, LargeImageIsStreamed)
   EXPECT_EQ(drilled.at(2).Image.Components, 1u);
   EXPECT_EQ(drilled.at(2).Image.EulerCharacteristic, 0);
 }
+
+TEST(RegionTopology, MoreMaterialsThanOneByteHolds)
+{
+  // 300 labels (from 70,000: four bytes per voxel in the image, two in the padded copy of
+  // compact indices): every one a lone voxel but label 70,299, the frame of the middle slice
+  // (a ring: one component, Euler characteristic 0).
+  LabelImage image(40, 40, 3);
+  int placed = 0;
+  for (int j = 1; j < 38 && placed < 299; j += 2)
+    for (int i = 1; i < 39 && placed < 299; i += 2)
+      image(i, j, 1) = 70000 + placed++;
+  ASSERT_EQ(placed, 299);
+  ASSERT_EQ(image.BytesPerLabel(), 4);
+  for (int j = 0; j < 40; ++j)
+    for (int i = 0; i < 40; ++i)
+      if (i == 0 || j == 0 || i == 39 || j == 39)
+        image(i, j, 1) = 70299;
+  const auto result = CompareTopology(image, SimplexMesh{});
+  ASSERT_EQ(result.size(), 300u);
+  for (int l = 0; l < 299; ++l)
+  {
+    EXPECT_EQ(result.at(70000 + l).Image.Components, 1u) << l;
+    EXPECT_EQ(result.at(70000 + l).Image.EulerCharacteristic, 1) << l;
+  }
+  EXPECT_EQ(ImageTopologyOf(image, 70299).Components, 1u);
+  EXPECT_EQ(ImageTopologyOf(image, 70299).EulerCharacteristic, 0);
+}

@@ -108,11 +108,15 @@
  * input mesh's smallest angle when that is smaller (a warning says so): field
  * data `CornerAngleBound`, `CellsBelowCornerAngle`, `StraightenedForCornerAngle`.
  *
- * If some cell cannot be made valid within MaximumUntanglingSteps and
- * MaximumShorteningRounds, the filter
- * reports an error naming the count, and still outputs the mesh with those cells
- * marked (`Valid` = 0) for inspection: an invalid mesh is never passed on
- * silently. Progress is reported by stage; AbortExecute stops the run (empty output).
+ * Once untangling has made the mesh valid, a later round that shortened curves
+ * for quality may break a cell again: such cells get the curves around them
+ * straightened for up to 8 more rounds, and if one is still invalid then,
+ * every curve is made straight (field data `StraightenedForValidity`; the
+ * linear cells are valid). If untangling never makes the mesh valid within
+ * MaximumUntanglingSteps and MaximumShorteningRounds, the filter reports an
+ * error naming the count and outputs the mesh with those cells marked
+ * (`Valid` = 0) for inspection: an invalid mesh is never passed on silently.
+ * Progress is reported by stage; AbortExecute stops the run (empty output).
  *
  * A material table in the input mesh's field data (MaterialLabel, MaterialName,
  * MaterialColor) passes to the output.

@@ -11,6 +11,7 @@ usage: export_test.py LABELMESHER WORKDIR CASE
 import json
 import os
 import resource
+import shutil
 import signal
 import subprocess
 import sys
@@ -158,6 +159,7 @@ def case_export_curved_msh():
             key = (min(cell[a], cell[b]), max(cell[a], cell[b]))
             mid = (cell[p], cell[q]) if cell[a] < cell[b] else (cell[q], cell[p])
             assert edges.setdefault(key, mid) == mid, "edge %s has two sets of nodes" % (key,)
+    assert shutil.which("gmsh"), "gmsh is not installed (python3-meshio and gmsh are test dependencies)"
     check = subprocess.run(["gmsh", msh, "-check"], capture_output=True, text=True)
     assert check.returncode == 0 and "Error" not in check.stdout + check.stderr, (check.stdout + check.stderr)[-500:]
     # Formats without cubic triangles are refused before meshing.

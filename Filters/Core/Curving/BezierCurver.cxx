@@ -204,7 +204,7 @@ Box2 BoxAroundMesh(const SimplexMesh& mesh)
   return { box[0] - margin, box[1] + margin, box[2] - margin, box[3] + margin };
 }
 
-/// Rounds after MaximumShorteningRounds for cells below the scaled Jacobian bound alone.
+/// Rounds after MaximumShorteningRounds that straighten the curves of failing cells at once.
 constexpr int kStraighteningRounds = 8;
 
 /// A straight cell's corners are its angles, computed the same way; curved ones are compared with
@@ -334,7 +334,7 @@ CurvingResult CurveMesh(
   std::set<std::size_t> shortenedForValidity;
   std::set<std::size_t> shortenedForBounds;
   std::map<std::size_t, int> invalidRounds;
-  bool invalidAfterRounds = false;
+  bool invalidAfterRounds = false, everValid = false;
   for (int round = 0;; ++round)
   {
     if (bounded)
@@ -377,18 +377,22 @@ CurvingResult CurveMesh(
       failing = CellsBelowQuality(result.Mesh, parameters.MinimumScaledJacobian, result.CornerAngleBound,
         belowScaledJacobian, belowCornerAngle);
     // Past the rounds asked for, cells still failing get a few more, each making the curves
-    // around them straight at once (halving again would not end). A valid mesh can turn invalid
-    // in the last of them (a halved curve squeezes a neighbour): that takes them too.
+    // around them straight at once (halving again would not end). Once untangling has made the
+    // mesh valid, a round that shortened curves for quality can break it again (a halved curve
+    // squeezes a neighbour): those cells take the same rounds. A mesh untangling never made
+    // valid ends the rounds as asked, and the run fails with the cells marked.
+    everValid = everValid || untangled.Valid;
     const bool pastRounds = round + 1 >= parameters.MaximumShorteningRounds;
-    if (pastRounds)
+    if (pastRounds && everValid)
       for (const FailingCell& f : failing)
         invalidRounds[f.Cell] = std::max(invalidRounds[f.Cell], 1);
-    if (failing.empty() || round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
+    if (failing.empty() || (pastRounds && !everValid) ||
+      round + 1 >= parameters.MaximumShorteningRounds + kStraighteningRounds ||
       !ShortenPiecesOfCells(result.Linear, failing, invalidRounds, pieces, shortenedForValidity))
     {
       result.CellsBelowScaledJacobian = belowScaledJacobian;
       result.CellsBelowCornerAngle = belowCornerAngle;
-      invalidAfterRounds = !untangled.Valid;
+      invalidAfterRounds = !untangled.Valid && everValid;
       break;
     }
   }

@@ -64,8 +64,10 @@ struct CurvingParameters
   CurveBounds Bounds{ -1.0, -1.0, 1.0 / 256.0 };
   /// Most untangling rounds, each after shortening the pieces of the cells the
   /// previous one left invalid (or below MinimumScaledJacobian or MinimumCornerAngle);
-  /// then up to 8 more that straighten those pieces at once, and if cells still
-  /// fail, every curve is made straight (the linear mesh's cells are valid).
+  /// then, once untangling has made the mesh valid, up to 8 more that straighten
+  /// those pieces at once, and if cells still fail, every curve is made straight
+  /// (the linear mesh's cells are valid). A mesh no round made valid is returned
+  /// with Valid false and its cells listed.
   int MaximumShorteningRounds = 8;
   /// Every cell's scaled Jacobian, min det J / max det J certified by the Bernstein coefficients
   /// of det J with subdivision (JacobianBounds::ScaledJacobian, a lower bound of the true ratio),
@@ -131,7 +133,8 @@ struct CurvingResult
   double CornerAngleBound = 0.0;
   std::size_t CellsBelowCornerAngle = 0;
   bool StraightenedForCornerAngle = false;
-  /// Every curve made straight because the rounds left cells invalid (the linear mesh's cells are).
+  /// Every curve made straight because the rounds left cells invalid after untangling had made
+  /// the mesh valid in an earlier round (the linear mesh's cells are valid).
   bool StraightenedForValidity = false;
   std::vector<StageTiming> Timings;
 };

@@ -69,9 +69,13 @@ std::vector<std::int64_t> EarVertices(const SimplexMesh& mesh, const std::vector
   std::vector<std::int64_t> apexes;
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
-    const int e = EarEdge(mesh, c, g);
-    if (e >= 0)
-      apexes.push_back(mesh.Cell(c)[(e + 2) % 3]); // the vertex opposite the ear's third edge
+    // Every corner of the cell that is one (a lone triangle of a material, its three edges one
+    // closed chain, has three), not only the first EarEdge finds.
+    const std::int64_t* v = mesh.Cell(c);
+    for (int k = 0; k < 3; ++k)
+      if (g.Smooth[static_cast<std::size_t>(v[k])] && g.Edges.count(Key(v[k], v[(k + 1) % 3])) &&
+        g.Edges.count(Key(v[k], v[(k + 2) % 3])))
+        apexes.push_back(v[k]);
   }
   std::sort(apexes.begin(), apexes.end());
   apexes.erase(std::unique(apexes.begin(), apexes.end()), apexes.end());

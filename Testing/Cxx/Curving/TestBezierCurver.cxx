@@ -367,6 +367,22 @@ TEST(BezierCurver, WithACornerBoundTheChainTurnsAtAnEarAndCornersKeepIt)
   EXPECT_NEAR(CurveMesh(mesh, parameters).CornerAngleBound, 45.0, 1e-9);
   parameters.MinimumCornerAngle = 180.0;
   EXPECT_THROW(CurveMesh(mesh, parameters), std::invalid_argument);
+
+  // A lone triangle: its three edges one closed chain, each corner an ear's vertex.
+  SimplexMesh lone;
+  lone.Dimension = 2;
+  lone.Points = { { 0, 0, 0 }, { 4, 0, 0 }, { 1, 3, 0 } };
+  lone.Connectivity = { 0, 1, 2 };
+  lone.Materials = { 1 };
+  const std::vector<InterfaceChain> loop = ExtractInterfaceChains(lone, { -10, 10, -10, 10 });
+  ASSERT_EQ(loop.size(), 1u);
+  EXPECT_EQ(EarVertices(lone, loop), (std::vector<std::int64_t>{ 0, 1, 2 }));
+  EXPECT_EQ(BreakChainsAt(loop, { 0, 1, 2 }).size(), 3u);
+  parameters.MinimumCornerAngle = 15.0;
+  const CurvingResult single = CurveMesh(lone, parameters);
+  EXPECT_EQ(single.EarCorners, 3u);
+  EXPECT_TRUE(single.Valid);
+  EXPECT_GE(testing::SampledCornerAngle(single.Mesh.Cell(0)), 15.0 - testing::kCornerAngleTolerance);
 }
 
 TEST(BezierCurver, LocatorFindsEveryCellCentre)

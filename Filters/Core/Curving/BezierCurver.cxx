@@ -212,11 +212,10 @@ constexpr int kStraighteningRounds = 8;
 /// bit for bit those of MakeStraightCurvedMesh).
 constexpr double kCornerAngleRounding = 1e-9;
 
-/// The smallest corner angle of the linear mesh's cells (degrees), as SmallestCornerAngle measures
-/// it on their straight cubic form.
-double SmallestLinearCornerAngle(const SimplexMesh& linear)
+/// The smallest corner angle (degrees) of `straight`, the linear mesh's cells in cubic form: the
+/// linear mesh's smallest angle, as SmallestCornerAngle measures it.
+double SmallestStraightCornerAngle(const CurvedMesh& straight)
 {
-  const CurvedMesh straight = MakeStraightCurvedMesh(linear);
   double smallest = 180.0;
   for (std::size_t c = 0; c < straight.Cells.size(); ++c)
     smallest = std::min(smallest, SmallestCornerAngle(straight.Cell(c)));
@@ -289,7 +288,6 @@ CurvingResult CurveMesh(
   {
     // No ear split: it would halve angles of the linear mesh, the fallback that keeps the bound.
     // The chains turn at ears instead (each side's tangent its own), checked like every corner.
-    result.CornerAngleBound = std::min(parameters.MinimumCornerAngle, SmallestLinearCornerAngle(result.Linear));
     const std::vector<std::int64_t> ears = EarVertices(result.Linear, chains);
     chains = BreakChainsAt(chains, ears);
     result.EarCorners = ears.size();
@@ -304,6 +302,8 @@ CurvingResult CurveMesh(
     result.NumberOfClosedChains += chain.Closed ? 1 : 0;
   }
   result.Mesh = MakeStraightCurvedMesh(result.Linear);
+  if (parameters.MinimumCornerAngle > 0.0)
+    result.CornerAngleBound = std::min(parameters.MinimumCornerAngle, SmallestStraightCornerAngle(result.Mesh));
   std::vector<CurvePiece> pieces = SmoothInterfaces(result.Linear, result.Mesh, chains, parameters);
   // C1 survives one rotation of both handles at a joint; C2 (second derivatives) would not.
   if (result.CornerAngleBound > 0.0 && parameters.Smoothing.Continuity == Smoothness::C1)

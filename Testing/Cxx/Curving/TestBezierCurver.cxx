@@ -290,15 +290,21 @@ TEST(BezierCurver, PixelAccuracyCountsWhatTheMeshMisses)
   EXPECT_EQ(shifted.Missed.at(7), 1u);
 }
 
-TEST(BezierCurver, EarsAreSplitAndCurvedValid)
+/// A square of material 1 fanned around its centre, with an ear (2,0)-(3,1)-(2,2) whose two
+/// outer edges meet at (3,1) (point 5), a smooth vertex of the closed boundary.
+SimplexMesh SquareWithAnEar()
 {
-  // A square of material 1 fanned around its centre, with an ear (2,0)-(3,1)-(2,2)
-  // whose two outer edges meet at (3,1), a smooth vertex of the closed boundary.
   SimplexMesh mesh;
   mesh.Dimension = 2;
   mesh.Points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 2, 0 }, { 0, 2, 0 }, { 1, 1, 0 }, { 3, 1, 0 } };
   mesh.Connectivity = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 1, 5, 2 };
   mesh.Materials = { 1, 1, 1, 1, 1 };
+  return mesh;
+}
+
+TEST(BezierCurver, EarsAreSplitAndCurvedValid)
+{
+  const SimplexMesh mesh = SquareWithAnEar();
   std::vector<InterfaceChain> chains = ExtractInterfaceChains(mesh, { -10, 10, -10, 10 });
   ASSERT_EQ(chains.size(), 1u);
   SimplexMesh split = mesh;
@@ -327,12 +333,8 @@ TEST(BezierCurver, EarsAreSplitAndCurvedValid)
 
 TEST(BezierCurver, WithACornerBoundTheChainTurnsAtAnEarAndCornersKeepIt)
 {
-  // The mesh above: its closed boundary turns at the ear's vertex (3,1) instead of being split.
-  SimplexMesh mesh;
-  mesh.Dimension = 2;
-  mesh.Points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 2, 0 }, { 0, 2, 0 }, { 1, 1, 0 }, { 3, 1, 0 } };
-  mesh.Connectivity = { 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 1, 5, 2 };
-  mesh.Materials = { 1, 1, 1, 1, 1 };
+  // Its closed boundary turns at the ear's vertex (3,1) instead of being split.
+  const SimplexMesh mesh = SquareWithAnEar();
   const std::vector<InterfaceChain> chains = ExtractInterfaceChains(mesh, { -10, 10, -10, 10 });
   ASSERT_EQ(chains.size(), 1u);
   ASSERT_TRUE(chains[0].Closed);

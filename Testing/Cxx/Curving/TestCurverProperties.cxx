@@ -68,39 +68,38 @@ TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
 
 INSTANTIATE_TEST_SUITE_P(Shards, CurverProperties, ::testing::Range(0, 4));
 
-/// The scaled Jacobian check can fail: with the curver's bound switched off, some of the same
-/// images have a curved cell below it (and with it on, none: the shards above).
-TEST(CurverPropertiesCheck, WithoutTheBoundSomeCellsFallBelowTheScaledJacobian)
+/// Over the shards' images until one is found: the violations naming `what` when the curver is
+/// asked for `scaledJacobian` and `cornerAngle` (ViolatedCurverGuarantees' switches).
+int ViolationsWithTheCurverAsking(const std::string& what, double scaledJacobian, double cornerAngle)
 {
-  int below = 0;
-  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + 4 * kImagesPerShard && below == 0; ++seed)
+  int found = 0;
+  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + 4 * kImagesPerShard && found == 0; ++seed)
   {
     const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
     const MesherParameters mesher = testing::DrawDistanceBounds(seed);
     const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
-      testing::DrawDecimationParameters(seed, 2, mesher), testing::DrawSmoothness(seed), nullptr, 0.0);
+      testing::DrawDecimationParameters(seed, 2, mesher), testing::DrawSmoothness(seed), nullptr, scaledJacobian,
+      cornerAngle);
     for (const std::string& line : violated)
-      below += line.find("min det J / max det J") != std::string::npos ? 1 : 0;
+      found += line.find(what) != std::string::npos ? 1 : 0;
   }
-  EXPECT_GT(below, 0) << "no image of the sample has a cell below the scaled Jacobian without the bound";
+  return found;
+}
+
+/// The scaled Jacobian check can fail: with the curver's bound switched off, some of the same
+/// images have a curved cell below it (and with it on, none: the shards above).
+TEST(CurverPropertiesCheck, WithoutTheBoundSomeCellsFallBelowTheScaledJacobian)
+{
+  EXPECT_GT(ViolationsWithTheCurverAsking("min det J / max det J", 0.0, -1.0), 0)
+    << "no image of the sample has a cell below the scaled Jacobian without the bound";
 }
 
 /// The corner angle check can fail: with the curver's corner bound switched off (and ears split,
 /// as they then are), some of the same images have a curved corner below the decimation's angle.
 TEST(CurverPropertiesCheck, WithoutTheBoundSomeCornersFallBelowTheAngle)
 {
-  int below = 0;
-  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + 4 * kImagesPerShard && below == 0; ++seed)
-  {
-    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
-    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
-    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
-      testing::DrawDecimationParameters(seed, 2, mesher), testing::DrawSmoothness(seed), nullptr,
-      testing::kCurvedScaledJacobian, 0.0);
-    for (const std::string& line : violated)
-      below += line.find("corner angle") != std::string::npos ? 1 : 0;
-  }
-  EXPECT_GT(below, 0) << "no image of the sample has a corner below the angle without the bound";
+  EXPECT_GT(ViolationsWithTheCurverAsking("corner angle", testing::kCurvedScaledJacobian, 0.0), 0)
+    << "no image of the sample has a corner below the angle without the bound";
 }
 
 /// Seeds that once failed a scan (labelmesher_property_scan --curve), with the

@@ -7,7 +7,7 @@
 // thousands before trusting a change to the mesher's per-leaf tests or the
 // decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan [--decimate|--streamed CELLS|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate|--streamed CELLS|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
 //
 // --streamed CELLS: mesher and decimator block by block (StreamedPipeline.h),
 // blocks of CELLS initial cells (a few dozen: every image crosses many
@@ -21,6 +21,11 @@
 // --curve (2D only): mesher, decimator and curver, C1 or C2 drawn per seed
 // (DrawSmoothness); the curved mesh must keep every guarantee of
 // TestCurverProperties.
+// --order2 (3D only): mesher, decimator and the quadratic curver; the quadratic
+// mesh must keep every guarantee of TestQuadraticCurver (QuadraticGuarantees.h).
+// With LABELMESHER_SCAN_UNCERTIFIED=distances (or =jacobians) in the
+// environment the curver skips that certificate (to find images that show it
+// is needed).
 // smooth: GenerateRandomLabelImageWithDescription(seed, dimension) (the images
 // of TestMesherProperties' MesherProperties suites); boxes:
 // GenerateRandomBoxImage(seed, dimension, SIZE) (default 24 in 2D, 14 in 3D);
@@ -32,6 +37,7 @@
 #include "CurverGuarantees.h"
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
+#include "QuadraticGuarantees.h"
 #include "RandomLabelImages.h"
 #include "ThinFeatureImages.h"
 
@@ -48,8 +54,16 @@ int main(int argc, char** argv)
 {
   labelmesher::SetMPIStarter(&labelmesher::StartMPI); // the core starts nothing itself
   const bool curve = argc > 1 && std::string(argv[1]) == "--curve";
+  const bool quadratic = argc > 1 && std::string(argv[1]) == "--order2";
   const bool streamed = argc > 2 && std::string(argv[1]) == "--streamed";
-  const bool decimate = curve || streamed || (argc > 1 && std::string(argv[1]) == "--decimate");
+  const bool decimate = curve || quadratic || streamed || (argc > 1 && std::string(argv[1]) == "--decimate");
+  QuadraticParameters quadraticCurver;
+  if (const char* uncertified = std::getenv("LABELMESHER_SCAN_UNCERTIFIED"))
+  {
+    quadraticCurver.CertifyDistances = std::string(uncertified) != "distances";
+    quadraticCurver.CertifyValidity = std::string(uncertified) != "jacobians";
+  }
+  quadraticCurver.MinimumScaledJacobian = testing::kQuadraticScaledJacobian;
   StreamingParameters streaming;
   if (streamed)
   {
@@ -66,7 +80,7 @@ int main(int argc, char** argv)
   if (argc < 5)
   {
     std::fprintf(
-      stderr, "usage: %s [--decimate|--streamed CELLS|--curve] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+      stderr, "usage: %s [--decimate|--streamed CELLS|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
@@ -85,6 +99,11 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bad arguments: --curve needs dimension 2\n");
     return 2;
   }
+  if (quadratic && dimension != 3)
+  {
+    std::fprintf(stderr, "bad arguments: --order2 needs dimension 3\n");
+    return 2;
+  }
   std::uint64_t misclassifiedLinear = 0, misclassifiedCurved = 0;
   std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed)
@@ -97,14 +116,16 @@ int main(int argc, char** argv)
     const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, parameters);
     DecimationCounts counts;
     testing::CurverRun run;
+    testing::QuadraticRun quadraticRun;
     const Smoothness smoothness = testing::DrawSmoothness(seed);
     const auto problems = curve
       ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run)
+      : quadratic ? testing::ViolatedQuadraticGuarantees(random.Image, parameters, decimation, &quadraticRun, &quadraticCurver)
       : streamed ? testing::ViolatedStreamedGuarantees(random.Image, parameters, decimation, streaming, &counts)
       : decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
                  : testing::ViolatedMesherGuarantees(random.Image, parameters);
-    misclassifiedLinear += run.MisclassifiedLinear;
-    misclassifiedCurved += run.MisclassifiedCurved;
+    misclassifiedLinear += run.MisclassifiedLinear + quadraticRun.MisclassifiedLinear;
+    misclassifiedCurved += run.MisclassifiedCurved + quadraticRun.MisclassifiedCurved;
     cellsBefore += counts.CellsBefore;
     cellsAfter += counts.CellsAfter;
     if (problems.empty())
@@ -116,6 +137,8 @@ int main(int argc, char** argv)
       std::printf(", decimated at %g degrees", decimation.MinimumAngle);
     if (curve)
       std::printf(", curved C%d", static_cast<int>(smoothness));
+    if (quadratic)
+      std::printf(", quadratic");
     std::printf(")\n");
     for (const auto& problem : problems)
       std::printf("  %s\n", problem.c_str());
@@ -123,11 +146,14 @@ int main(int argc, char** argv)
     std::fflush(stdout);
   }
   std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n",
-    curve ? "curved " : streamed ? "streamed " : decimate ? "decimated " : "",
+    curve ? "curved " : quadratic ? "quadratic " : streamed ? "streamed " : decimate ? "decimated " : "",
     family.c_str(), dimension, static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
     static_cast<unsigned long long>(failures), static_cast<unsigned long long>(count));
   if (curve)
     std::printf("misclassified pixels: %llu linear, %llu curved\n", static_cast<unsigned long long>(misclassifiedLinear),
+      static_cast<unsigned long long>(misclassifiedCurved));
+  else if (quadratic)
+    std::printf("misclassified voxels: %llu linear, %llu quadratic\n", static_cast<unsigned long long>(misclassifiedLinear),
       static_cast<unsigned long long>(misclassifiedCurved));
   else if (decimate)
     std::printf("cells (background included): %llu before, %llu after decimation\n",

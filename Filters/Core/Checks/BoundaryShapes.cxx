@@ -87,6 +87,25 @@ void AddMeshBoundary(const SimplexMesh& mesh, Boundaries& b)
   }
 }
 
+/// Given facets: each bounds the non-zero materials of its two sides when they differ.
+void AddFacets(const std::vector<BoundaryFacet>& facets, Boundaries& b)
+{
+  for (const BoundaryFacet& f : facets)
+  {
+    if (f.First == f.Second)
+      continue;
+    Shape s;
+    s.K = ShapeKind::Triangle;
+    for (int k = 0; k < 3; ++k)
+      s.P[k] = f.Points[k];
+    SetPlane(s, 3);
+    b.Overall.Mesh.push_back(s);
+    for (std::int32_t m : { f.First, f.Second })
+      if (m != 0)
+        b.PerMaterial[m].Mesh.push_back(s);
+  }
+}
+
 } // namespace
 
 Boundaries ExtractBoundaries(const LabelImage& image, const SimplexMesh& mesh)
@@ -94,6 +113,14 @@ Boundaries ExtractBoundaries(const LabelImage& image, const SimplexMesh& mesh)
   Boundaries b;
   AddImageBoundary(image, b);
   AddMeshBoundary(mesh, b);
+  return b;
+}
+
+Boundaries ExtractBoundaries(const LabelImage& image, const std::vector<BoundaryFacet>& facets)
+{
+  Boundaries b;
+  AddImageBoundary(image, b);
+  AddFacets(facets, b);
   return b;
 }
 

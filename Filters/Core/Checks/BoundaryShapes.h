@@ -10,6 +10,7 @@
  */
 
 #include "Checks/ConvexShape.h"
+#include "Checks/MeshChecks.h"
 #include "Support/LabelImage.h"
 #include "Mesh/SimplexMesh.h"
 
@@ -37,6 +38,7 @@ struct Boundaries
 };
 
 Boundaries ExtractBoundaries(const LabelImage& image, const SimplexMesh& mesh);
+Boundaries ExtractBoundaries(const LabelImage& image, const std::vector<BoundaryFacet>& facets);
 
 /// A material whose boundaries are the overall ones (a single material): its
 /// pieces are a subset of the overall ones, so equal counts mean equal sets,

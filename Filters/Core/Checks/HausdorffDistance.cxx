@@ -56,15 +56,27 @@ bool WithinPair(const BoundaryPieces& b, double imageToMesh, double meshToImage)
 
 } // namespace
 
-HausdorffReport MeasureHausdorff(const LabelImage& image, const SimplexMesh& mesh, double tolerance)
+namespace
 {
-  const checks_detail::Boundaries b = checks_detail::ExtractBoundaries(image, mesh);
+HausdorffReport MeasureBoundaries(const checks_detail::Boundaries& b, double tolerance)
+{
   HausdorffReport report;
   report.Overall = MeasurePair(b.Overall, tolerance);
   for (const auto& entry : b.PerMaterial)
     report.PerMaterial[entry.first] =
       checks_detail::SameAsOverall(b, entry.second) ? report.Overall : MeasurePair(entry.second, tolerance);
   return report;
+}
+} // namespace
+
+HausdorffReport MeasureHausdorff(const LabelImage& image, const SimplexMesh& mesh, double tolerance)
+{
+  return MeasureBoundaries(checks_detail::ExtractBoundaries(image, mesh), tolerance);
+}
+
+HausdorffReport MeasureHausdorff(const LabelImage& image, const std::vector<BoundaryFacet>& facets, double tolerance)
+{
+  return MeasureBoundaries(checks_detail::ExtractBoundaries(image, facets), tolerance);
 }
 
 bool WithinHausdorff(const LabelImage& image, const SimplexMesh& mesh, double imageToMesh, double meshToImage)

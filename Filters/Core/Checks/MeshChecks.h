@@ -83,6 +83,17 @@ struct HausdorffReport
 };
 HausdorffReport MeasureHausdorff(
   const LabelImage& image, const SimplexMesh& mesh, double tolerance = 1.0 / 1024.0);
+/// A mesh boundary given as triangles with the materials on their two sides
+/// (0: background or outside), for meshes whose boundaries are not flat: a
+/// curved mesh's boundary measured on its flattening (QuadraticVolume.h). A
+/// facet bounds each non-zero material on one side only.
+struct BoundaryFacet
+{
+  Point3 Points[3];
+  std::int32_t First = 0, Second = 0;
+};
+HausdorffReport MeasureHausdorff(
+  const LabelImage& image, const std::vector<BoundaryFacet>& facets, double tolerance = 1.0 / 1024.0);
 /// Rigorous yes/no: true only if h(I, M) <= imageToMesh and h(M, I) <= meshToImage
 /// hold exactly (up to 1e-9 for round-off), overall and for every material.
 /// Conservative: an element the branch and bound cannot decide within its depth

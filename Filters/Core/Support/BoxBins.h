@@ -4,11 +4,11 @@
 
 /**
  * @file BoxBins.h
- * Items binned on an unbounded uniform 2D grid by their axis-aligned boxes:
+ * Items binned on an unbounded uniform 2D or 3D grid by their axis-aligned boxes:
  * an item goes into every bin its box overlaps, so items whose boxes
  * overlap share a bin, and a point's bin lists every item whose box holds it.
- * The broad phase of the curver's and the checks' 2D proximity tests (grow
- * a box by a reach to find items within that reach of a point).
+ * The broad phase of the curvers' and the checks' proximity tests (grow a
+ * box by a reach to find items within that reach of a point).
  */
 
 #include <array>
@@ -21,27 +21,41 @@
 namespace labelmesher
 {
 
-class BoxBins
+template <std::size_t D>
+class BoxBinsOf
 {
 public:
-  using Point = std::array<double, 2>;
+  using Point = std::array<double, D>;
 
-  explicit BoxBins(double cell)
+  explicit BoxBinsOf(double cell)
     : Cell(cell)
   {
   }
 
   void Insert(std::size_t item, const Point& lo, const Point& hi)
   {
-    for (long y = Bin(lo[1]); y <= Bin(hi[1]); ++y)
-      for (long x = Bin(lo[0]); x <= Bin(hi[0]); ++x)
-        Bins[Key(x, y)].push_back(item);
+    std::array<long, D> first, last, at;
+    for (std::size_t a = 0; a < D; ++a)
+      at[a] = first[a] = Bin(lo[a]), last[a] = Bin(hi[a]);
+    for (;;)
+    {
+      Bins[Key(at)].push_back(item);
+      std::size_t a = 0;
+      while (a < D && at[a] == last[a])
+        at[a] = first[a], ++a;
+      if (a == D)
+        return;
+      ++at[a];
+    }
   }
 
   /// The items whose boxes may hold p (every one that does).
   const std::vector<std::size_t>& At(const Point& p) const
   {
-    const auto it = Bins.find(Key(Bin(p[0]), Bin(p[1])));
+    std::array<long, D> at;
+    for (std::size_t a = 0; a < D; ++a)
+      at[a] = Bin(p[a]);
+    const auto it = Bins.find(Key(at));
     return it == Bins.end() ? Empty : it->second;
   }
 
@@ -57,18 +71,25 @@ public:
 
 private:
   long Bin(double x) const { return static_cast<long>(std::floor(x / Cell)); }
-  /// x in the high 32 bits, y in the low ones. Shifted as unsigned: shifting a negative bin
-  /// index left is undefined before C++20 (UBSan found it); the keys are the same bits as before.
-  static long long Key(long x, long y)
+  /// The first axis in the highest bits (32 each in 2D, 21 in 3D). Shifted as unsigned: shifting
+  /// a negative bin index left is undefined before C++20 (UBSan found it).
+  static long long Key(const std::array<long, D>& at)
   {
-    const std::uint64_t high = static_cast<std::uint32_t>(x), low = static_cast<std::uint32_t>(y);
-    return static_cast<long long>((high << 32) | low);
+    constexpr unsigned bits = 64 / D;
+    constexpr std::uint64_t mask = bits >= 32 ? 0xffffffffu : (std::uint64_t{ 1 } << bits) - 1;
+    std::uint64_t key = 0;
+    for (std::size_t a = 0; a < D; ++a)
+      key = (key << bits) | (static_cast<std::uint64_t>(static_cast<std::uint32_t>(at[a])) & mask);
+    return static_cast<long long>(key);
   }
 
   double Cell;
   std::unordered_map<long long, std::vector<std::size_t>> Bins;
   std::vector<std::size_t> Empty;
 };
+
+using BoxBins = BoxBinsOf<2>;
+using BoxBins3 = BoxBinsOf<3>;
 
 } // namespace labelmesher
 

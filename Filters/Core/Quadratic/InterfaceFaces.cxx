@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Faces between materials and on the box, and the edges of one smooth sheet.
+#include "Quadratic/InterfaceFaces.h"
+
+#include "Support/Geometry.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace labelmesher
+{
+using namespace geometry;
+
+std::vector<MaterialFace> FindInterfaceFaces(const QuadraticMesh& mesh)
+{
+  const SimplexMesh& linear = mesh.Linear;
+  // Face (sorted corners) -> (cell, corner opposite) of its first cell, and whether a second came.
+  struct Seen
+  {
+    std::size_t Cell;
+    int Opposite;
+    std::int64_t Other = -1;
+  };
+  std::map<std::array<std::int64_t, 3>, Seen> faces;
+  for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
+  {
+    const std::int64_t* v = linear.Cell(c);
+    for (int k = 0; k < 4; ++k)
+    {
+      std::array<std::int64_t, 3> key{ v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4] };
+      std::sort(key.begin(), key.end());
+      const auto [it, added] = faces.emplace(key, Seen{ c, k });
+      if (!added)
+        it->second.Other = static_cast<std::int64_t>(c);
+    }
+  }
+  std::vector<MaterialFace> out;
+  for (const auto& [key, seen] : faces)
+  {
+    const std::int32_t here = linear.Materials[seen.Cell];
+    const bool onBox = seen.Other < 0;
+    const std::int32_t there = onBox ? here : linear.Materials[static_cast<std::size_t>(seen.Other)];
+    if (!onBox && here == there)
+      continue;
+    const std::int64_t* v = linear.Cell(seen.Cell);
+    const int k = seen.Opposite;
+    // Corners of the face opposite corner k, ordered so that the normal points out of the cell.
+    std::array<std::int64_t, 3> p{ v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4] };
+    const auto& P = linear.Points;
+    const Point3& a = P[static_cast<std::size_t>(p[0])];
+    if (Dot(Cross(Sub(P[static_cast<std::size_t>(p[1])], a), Sub(P[static_cast<std::size_t>(p[2])], a)),
+          Sub(a, P[static_cast<std::size_t>(v[k])])) < 0.0)
+      std::swap(p[1], p[2]);
+    MaterialFace face;
+    face.Points = p;
+    face.OnBox = onBox;
+    face.Below = std::min(here, there);
+    face.Above = std::max(here, there);
+    if (!onBox && here > there)
+      std::swap(face.Points[1], face.Points[2]); // the normal points from Below to Above
+    const std::size_t cell = seen.Cell;
+    for (int j = 0; j < 3; ++j)
+    {
+      const std::int64_t a = face.Points[(j + 1) % 3], b = face.Points[(j + 2) % 3];
+      for (int e = 0; e < 6; ++e)
+      {
+        const std::int64_t x = v[kTetraEdges[e][0]], y = v[kTetraEdges[e][1]];
+        if ((x == a && y == b) || (x == b && y == a))
+          face.Edges[j] = mesh.CellEdges[cell * 6 + e];
+      }
+    }
+    out.push_back(face);
+  }
+  return out;
+}
+
+Point3 FaceNormal(const QuadraticMesh& mesh, const MaterialFace& face)
+{
+  const auto& P = mesh.Linear.Points;
+  const Point3& a = P[static_cast<std::size_t>(face.Points[0])];
+  const Point3 n = Cross(Sub(P[static_cast<std::size_t>(face.Points[1])], a), Sub(P[static_cast<std::size_t>(face.Points[2])], a));
+  const double length = Norm(n);
+  return length > 0.0 ? Scale(n, 1.0 / length) : n;
+}
+
+std::vector<char> CurvableEdges(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
+  const std::array<double, 6>& box)
+{
+  const std::size_t edges = mesh.Edges.size();
+  std::vector<int> count(edges, 0);
+  std::vector<char> blocked(edges, 0);
+  std::vector<std::pair<std::int32_t, std::int32_t>> pair(edges, { 0, 0 });
+  std::vector<Point3> normal(edges, Point3{ 0.0, 0.0, 0.0 });
+  for (const MaterialFace& f : faces)
+  {
+    const Point3 n = FaceNormal(mesh, f);
+    for (std::int64_t id : f.Edges)
+    {
+      const auto e = static_cast<std::size_t>(id);
+      if (f.OnBox || (count[e] > 0 && pair[e] != std::make_pair(f.Below, f.Above)))
+        blocked[e] = 1;
+      if (count[e] == 1 && Dot(normal[e], n) <= 0.0)
+        blocked[e] = 1; // a fold: the two faces turn by 90 degrees or more
+      pair[e] = { f.Below, f.Above };
+      normal[e] = n;
+      ++count[e];
+    }
+  }
+  auto onBoxSide = [&](const Point3& a, const Point3& b) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (double side : { box[2 * axis], box[2 * axis + 1] })
+        if (a[axis] == side && b[axis] == side)
+          return true;
+    return false;
+  };
+  std::vector<char> curvable(edges, 0);
+  for (std::size_t e = 0; e < edges; ++e)
+  {
+    const Point3& a = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[e][0])];
+    const Point3& b = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[e][1])];
+    curvable[e] = count[e] == 2 && !blocked[e] && !onBoxSide(a, b);
+  }
+  return curvable;
+}
+
+} // namespace labelmesher

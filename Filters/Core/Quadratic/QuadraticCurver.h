@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_QuadraticCurver_h
+#define labelmesher_QuadraticCurver_h
+
+/**
+ * @file QuadraticCurver.h
+ * A decimated tetrahedral mesh made quadratic, its material interfaces fitted
+ * to the image: the 3D curvilinear meshing the dissertation leaves as future
+ * work (chapter 5: a linear mesh first, then straight-sided to curved).
+ *
+ * Interior edges, edges on the box and junction curves stay straight; the
+ * mid-nodes of the other interface edges are fitted (InterfaceFit.h). Then,
+ * until nothing fails, a round certifies
+ *   - validity and quality: every curved cell's min det J / max det J at least
+ *     MinimumScaledJacobian, by the Bernstein coefficients of det J
+ *     (TetraJacobian.h; 0 asks for det J > 0 alone);
+ *   - both distance bounds on every curved interface face (QuadraticFidelity.h);
+ * and the curved edges of each failing cell or face are pulled back towards
+ * straight (offset × 1/2, 1/4, then 0). Straight cells are the linear mesh's,
+ * which holds every bound, so the loop ends, at the latest with the linear mesh.
+ *
+ * Why interfaces cannot cross or touch, and topology is kept: the curved mesh
+ * is the image of the linear mesh under a continuous map (neighbours share the
+ * nodes of their common face) that is locally injective (det J > 0 in every
+ * closed cell) and the identity on the box's boundary (box faces stay flat and
+ * box edges straight). Such a map of a ball onto itself is a homeomorphism
+ * (a local homeomorphism that is injective on the boundary of a compact,
+ * simply connected domain is injective: Meisters & Olech, Duke Math. J. 30,
+ * 1963), so every material region is the homeomorphic image of its linear one.
+ * This needs the whole box meshed: background cells are curved and certified
+ * with the rest.
+ */
+
+#include "Quadratic/InterfaceFit.h"
+#include "Quadratic/QuadraticFidelity.h"
+#include "Quadratic/QuadraticMesh.h"
+#include "Support/LabelImage.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace labelmesher
+{
+
+struct QuadraticParameters
+{
+  double ImageToMeshDistance = 2.0; ///< h(I, M) the curved interfaces keep, voxels
+  double MeshToImageDistance = 2.0; ///< h(M, I), voxels
+  double MinimumScaledJacobian = 0.1; ///< certified min det J / max det J of every cell, [0, 1)
+  double Tolerance = 1.0 / 64.0; ///< flattening tolerance of the distance test, voxels
+  InterfaceFitOptions Fit;
+  /// For tests only: switch a certificate off to show that the checks catch what it prevents.
+  bool CertifyValidity = true;
+  bool CertifyDistances = true;
+};
+
+struct QuadraticResult
+{
+  QuadraticMesh Mesh;
+  std::vector<double> ScaledJacobian; ///< per cell, certified lower bound (1: straight)
+  std::size_t FittedEdges = 0;      ///< interface edges given a fitted mid-node
+  std::size_t CurvedEdges = 0;      ///< still curved at the end
+  std::size_t ShortenedEdges = 0;   ///< pulled back at least once
+  std::size_t StraightenedEdges = 0; ///< pulled back to straight
+  std::size_t Rounds = 0;
+  std::size_t CellsFailedQuality = 0;  ///< cells that failed the Jacobian bound in some round
+  std::size_t FacesFailedDistance = 0; ///< faces that failed a distance bound in some round
+  double FitSeconds = 0.0, CertifySeconds = 0.0;
+};
+
+/// `linear`: the whole decimated mesh (every cell of the box, background
+/// included), index space, positively oriented tetrahedra; `image` the label
+/// image it was made from. FitQuadraticMesh then CertifyQuadraticMesh.
+QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
+
+/// The first stage: edges numbered, interface mid-nodes fitted (uncertified).
+QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
+
+/// The second: certifies every cell and face and pulls back what fails, until
+/// all hold, whatever the offsets (a fit's, or any other).
+void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters);
+
+} // namespace labelmesher
+
+#endif

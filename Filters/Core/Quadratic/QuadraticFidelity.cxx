@@ -1,0 +1,276 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Both distance bounds on curved faces, certified on their flattenings.
+#include "Quadratic/QuadraticFidelity.h"
+
+#include "Criteria/DistanceBound.h"
+#include "Support/BoxBins.h"
+#include "Support/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+namespace labelmesher
+{
+using namespace geometry;
+
+std::array<Point3, 6> FaceNodes(const QuadraticMesh& mesh, const MaterialFace& face)
+{
+  std::array<Point3, 6> nodes;
+  for (int k = 0; k < 3; ++k)
+  {
+    nodes[k] = mesh.Linear.Points[static_cast<std::size_t>(face.Points[k])];
+    nodes[3 + k] = mesh.MidNode(static_cast<std::size_t>(face.Edges[k]));
+  }
+  return nodes;
+}
+
+namespace
+{
+
+Point3 EvaluateFace(const std::array<Point3, 6>& n, double l0, double l1, double l2)
+{
+  const double l[3] = { l0, l1, l2 };
+  Point3 x{ 0.0, 0.0, 0.0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    x = Add(x, Scale(n[k], l[k] * (2.0 * l[k] - 1.0)));
+    x = Add(x, Scale(n[3 + k], 4.0 * l[(k + 1) % 3] * l[(k + 2) % 3]));
+  }
+  return x;
+}
+
+/// The face's Bézier control points: it lies in their convex hull.
+std::array<Point3, 6> ControlPoints(const std::array<Point3, 6>& n)
+{
+  std::array<Point3, 6> c = n;
+  for (int k = 0; k < 3; ++k)
+    c[3 + k] = Sub(Scale(n[3 + k], 2.0), Scale(Add(n[(k + 1) % 3], n[(k + 2) % 3]), 0.5));
+  return c;
+}
+
+bool FaceIsCurved(const QuadraticMesh& mesh, const MaterialFace& face)
+{
+  for (std::int64_t e : face.Edges)
+    if (mesh.Curved(static_cast<std::size_t>(e)))
+      return true;
+  return false;
+}
+
+ConvexPiece Triangle(const std::array<Point3, 3>& t)
+{
+  ConvexPiece p;
+  p.Count = 3;
+  for (int k = 0; k < 3; ++k)
+    p.Points[k] = t[k];
+  return p;
+}
+
+/// The face between voxel (i, j, k) and its neighbour along +axis.
+ConvexPiece VoxelFace(int i, int j, int k, int axis)
+{
+  const Point3 c{ i + (axis == 0 ? 0.5 : 0.0), j + (axis == 1 ? 0.5 : 0.0), k + (axis == 2 ? 0.5 : 0.0) };
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  ConvexPiece p;
+  p.Count = 4;
+  const double su[4] = { -0.5, 0.5, 0.5, -0.5 }, sv[4] = { -0.5, -0.5, 0.5, 0.5 };
+  for (int q = 0; q < 4; ++q)
+  {
+    p.Points[q] = c;
+    p.Points[q][u] += su[q];
+    p.Points[q][v] += sv[q];
+  }
+  return p;
+}
+
+struct VoxelBox
+{
+  int Lo[3], Hi[3];
+};
+
+/// The voxels (outside ones included, as label 0) whose faces may lie within
+/// `reach` of the points.
+template <class Points>
+VoxelBox VoxelsNear(const Points& points, double reach, const LabelImage& image)
+{
+  VoxelBox box;
+  for (int a = 0; a < 3; ++a)
+  {
+    double lo = points[0][a], hi = lo;
+    for (const Point3& p : points)
+      lo = std::min(lo, p[a]), hi = std::max(hi, p[a]);
+    box.Lo[a] = std::max(-1, static_cast<int>(std::floor(lo - reach)) - 1);
+    box.Hi[a] = std::min(image.Dimensions[a], static_cast<int>(std::ceil(hi + reach)) + 1);
+  }
+  return box;
+}
+
+/// Calls f(i, j, k, axis) for each voxel face of the box between a voxel of
+/// material m and one of another label.
+template <class F>
+void ForEachBoundaryFace(const LabelImage& image, const VoxelBox& box, std::int32_t m, F&& f)
+{
+  for (int k = box.Lo[2]; k <= box.Hi[2]; ++k)
+    for (int j = box.Lo[1]; j <= box.Hi[1]; ++j)
+      for (int i = box.Lo[0]; i <= box.Hi[0]; ++i)
+      {
+        const bool here = image.At(i, j, k) == m;
+        if (i < box.Hi[0] && here != (image.At(i + 1, j, k) == m))
+          f(i, j, k, 0);
+        if (j < box.Hi[1] && here != (image.At(i, j + 1, k) == m))
+          f(i, j, k, 1);
+        if (k < box.Hi[2] && here != (image.At(i, j, k + 1) == m))
+          f(i, j, k, 2);
+      }
+}
+
+} // namespace
+
+int FlatteningLevel(const std::array<Point3, 6>& n, double tolerance)
+{
+  double bend = 0.0;
+  for (int k = 0; k < 3; ++k)
+    bend = std::max(bend, Norm(Sub(Add(n[(k + 1) % 3], n[(k + 2) % 3]), Scale(n[3 + k], 2.0))));
+  double error = 2.0 / 3.0 * bend;
+  for (int level = 0; level <= 5; ++level, error /= 4.0)
+    if (error <= tolerance)
+      return level;
+  return -1;
+}
+
+std::vector<std::array<Point3, 3>> FlattenFace(const std::array<Point3, 6>& nodes, int level)
+{
+  const int n = 1 << level;
+  auto at = [&](int i, int j) { return EvaluateFace(nodes, double(n - i - j) / n, double(i) / n, double(j) / n); };
+  std::vector<std::array<Point3, 3>> triangles;
+  triangles.reserve(static_cast<std::size_t>(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i + j < n; ++i)
+    {
+      triangles.push_back({ at(i, j), at(i + 1, j), at(i, j + 1) });
+      if (i + j + 1 < n)
+        triangles.push_back({ at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  return triangles;
+}
+
+std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
+  const LabelImage& image, const QuadraticBounds& bounds)
+{
+  const double T = bounds.Tolerance;
+  std::vector<char> failing(faces.size(), 0);
+  std::vector<std::vector<ConvexPiece>> flattened(faces.size());
+  std::vector<std::array<Point3, 6>> nodes(faces.size()), hull(faces.size());
+  std::vector<std::size_t> curved;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    nodes[f] = FaceNodes(mesh, faces[f]);
+    hull[f] = ControlPoints(nodes[f]);
+    if (!FaceIsCurved(mesh, faces[f]))
+      continue;
+    curved.push_back(f);
+    const int level = FlatteningLevel(nodes[f], T);
+    if (level < 0 || bounds.MeshToImage < T || bounds.ImageToMesh < T)
+    {
+      failing[f] = 1;
+      continue;
+    }
+    for (const auto& t : FlattenFace(nodes[f], level))
+      flattened[f].push_back(Triangle(t));
+  }
+
+  // Mesh to image: each sub-triangle near the image boundary of each non-zero material beside it.
+  const double meshReach = bounds.MeshToImage - T;
+  for (std::size_t f : curved)
+  {
+    if (failing[f])
+      continue;
+    for (std::int32_t m : { faces[f].Below, faces[f].Above })
+    {
+      if (m == 0 || failing[f])
+        continue;
+      std::vector<ConvexPiece> targets;
+      ForEachBoundaryFace(image, VoxelsNear(hull[f], meshReach + 1.0, image), m,
+        [&](int i, int j, int k, int axis) { targets.push_back(VoxelFace(i, j, k, axis)); });
+      for (const ConvexPiece& t : flattened[f])
+        if (!WithinDistance(t, targets, meshReach))
+        {
+          failing[f] = 1;
+          break;
+        }
+    }
+  }
+
+  // Image to mesh: voxel faces of m near a curved face of m, against m's faces within reach.
+  const double h = bounds.ImageToMesh;
+  BoxBins3 bins(4.0);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    std::array<double, 3> lo, hi;
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = hi[a] = hull[f][0][a];
+      for (const Point3& p : hull[f])
+        lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+      lo[a] -= h + 1.0, hi[a] += h + 1.0; // a voxel face's points are within 0.71 of its centre
+    }
+    bins.Insert(f, lo, hi);
+  }
+  auto bounds_ = [](const MaterialFace& face, std::int32_t m) {
+    return face.Below == m || (!face.OnBox && face.Above == m);
+  };
+  std::vector<std::int32_t> materials;
+  for (std::size_t f : curved)
+    for (std::int32_t m : { faces[f].Below, faces[f].Above })
+      if (m != 0)
+        materials.push_back(m);
+  std::sort(materials.begin(), materials.end());
+  materials.erase(std::unique(materials.begin(), materials.end()), materials.end());
+  for (std::int32_t m : materials)
+  {
+    std::unordered_set<long long> tested;
+    const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
+    for (std::size_t f : curved)
+    {
+      if (!bounds_(faces[f], m))
+        continue;
+      ForEachBoundaryFace(image, VoxelsNear(hull[f], h + 1.0, image), m, [&](int i, int j, int k, int axis) {
+        const long long key = (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis;
+        if (!tested.insert(key).second)
+          return;
+        const ConvexPiece voxel = VoxelFace(i, j, k, axis);
+        const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
+        std::vector<ConvexPiece> straight, all;
+        std::vector<std::size_t> near;
+        for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
+        {
+          if (!bounds_(faces[g], m))
+            continue;
+          if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
+          {
+            straight.push_back(Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] }));
+            all.push_back(straight.back());
+          }
+          else
+          {
+            near.push_back(g);
+            all.insert(all.end(), flattened[g].begin(), flattened[g].end());
+          }
+        }
+        if (near.empty())
+          return; // the linear mesh's own boundary here: certified by the decimator
+        if (WithinDistance(voxel, straight, h) || WithinDistance(voxel, all, h - T))
+          return;
+        for (std::size_t g : near)
+          failing[g] = 1;
+      });
+    }
+  }
+  std::vector<std::size_t> out;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (failing[f])
+      out.push_back(f);
+  return out;
+}
+
+} // namespace labelmesher

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Mesher, decimator and quadratic curver on one image, and every guarantee of the curved mesh measured.
+#include "QuadraticGuarantees.h"
+
+#include "Checks/QuadraticVolume.h"
+
+#include <sstream>
+
+namespace labelmesher
+{
+namespace testing
+{
+
+std::vector<std::string> ViolatedQuadraticGuarantees(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, QuadraticRun* run, const QuadraticParameters* curver)
+{
+  QuadraticRun local;
+  QuadraticRun& out = run ? *run : local;
+  QuadraticParameters parameters = curver ? *curver : QuadraticParameters{};
+  parameters.ImageToMeshDistance = mesher.ImageToMeshDistance;
+  parameters.MeshToImageDistance = mesher.MeshToImageDistance;
+  if (!curver)
+    parameters.MinimumScaledJacobian = kQuadraticScaledJacobian;
+  SimplexMesh linear;
+  try
+  {
+    linear = DecimateMesh(image, MeshLabelImage(image, mesher).Mesh, decimation).Mesh;
+    out.Result = CurveQuadratic(linear, image, parameters);
+  }
+  catch (const std::exception& e)
+  {
+    return { std::string("mesher, decimator or curver threw: ") + e.what() };
+  }
+  return ViolatedQuadraticMeshGuarantees(image, mesher, linear, out);
+}
+
+std::vector<std::string> ViolatedQuadraticMeshGuarantees(const LabelImage& image, const MesherParameters& mesher,
+  const SimplexMesh& linear, QuadraticRun& out)
+{
+  std::vector<std::string> violated;
+  auto fail = [&violated](const std::string& what) { violated.push_back(what); };
+  const QuadraticMesh& mesh = out.Result.Mesh;
+
+  // Validity and quality: det J on a dense lattice of every curved cell.
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    if (!mesh.CellIsCurved(c))
+      continue;
+    double smallest = 0.0;
+    const double ratio = SampledScaledJacobian(mesh.Nodes(c), 8, smallest);
+    if (smallest <= 0.0)
+    {
+      fail("cell " + std::to_string(c) + ": det J " + std::to_string(smallest) + " <= 0 at a sample");
+      break;
+    }
+    if (ratio < kQuadraticScaledJacobian)
+    {
+      fail("cell " + std::to_string(c) + ": sampled min det J / max det J " + std::to_string(ratio) + " below " +
+        std::to_string(kQuadraticScaledJacobian));
+      break;
+    }
+    if (ratio < out.Result.ScaledJacobian[c] - 1e-9)
+    {
+      fail("cell " + std::to_string(c) + ": certified scaled Jacobian " + std::to_string(out.Result.ScaledJacobian[c]) +
+        " above the sampled " + std::to_string(ratio));
+      break;
+    }
+  }
+
+  // Distances on the boundary faces flattened finely; topology and conformity on the refined cells.
+  constexpr int kFacetSteps = 8, kRefinement = 2, kAccuracyRefinement = 4;
+  const double allowance = RefinementTolerance(mesh, kFacetSteps) + 2.0 / 1024.0 + 1e-9;
+  const HausdorffReport distances = MeasureHausdorff(image, CurvedBoundaryFacets(mesh, kFacetSteps));
+  for (const auto& [material, d] : distances.PerMaterial)
+  {
+    if (d.ImageToMesh > mesher.ImageToMeshDistance + allowance || d.MeshToImage > mesher.MeshToImageDistance + allowance)
+    {
+      std::ostringstream line;
+      line << "material " << material << ": h(I,M) " << d.ImageToMesh << ", h(M,I) " << d.MeshToImage
+           << " beyond the bounds " << mesher.ImageToMeshDistance << "/" << mesher.MeshToImageDistance << " + "
+           << allowance;
+      fail(line.str());
+    }
+  }
+  const SimplexMesh refined = RefineQuadraticMesh(mesh, kRefinement);
+  if (!MeasureConformity(refined).Conforming())
+    fail("the refined quadratic mesh is not conforming");
+  for (const auto& [material, t] : CompareTopology(image, refined))
+    if (!t.Matches())
+      fail("material " + std::to_string(material) + ": topology " + std::to_string(t.Mesh.Components) + " components, chi " +
+        std::to_string(t.Mesh.EulerCharacteristic) + " where the image has " + std::to_string(t.Image.Components) +
+        ", " + std::to_string(t.Image.EulerCharacteristic));
+
+  out.MisclassifiedLinear = MeasureVoxelAccuracy(image, linear).Misclassified;
+  out.MisclassifiedCurved = MeasureVoxelAccuracy(image, RefineQuadraticMesh(mesh, kAccuracyRefinement)).Misclassified;
+  return violated;
+}
+
+} // namespace testing
+} // namespace labelmesher

@@ -268,9 +268,6 @@ void AddMeasurements(vtkFieldData* fd, const LabelImage& image, const SimplexMes
   done("topology");
 }
 
-namespace
-{
-
 vtkSmartPointer<vtkPoints> PhysicalPoints(const std::vector<Point3>& points, const ImagePlacement& placement)
 {
   auto physical = vtkSmartPointer<vtkPoints>::New();
@@ -282,8 +279,6 @@ vtkSmartPointer<vtkPoints> PhysicalPoints(const std::vector<Point3>& points, con
   }
   return physical;
 }
-
-} // namespace
 
 void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output)
 {

@@ -34,6 +34,7 @@ class vtkDataObject;
 class vtkAlgorithm;
 class vtkDataArray;
 class vtkInformationVector;
+class vtkPoints;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 
@@ -126,6 +127,9 @@ void AddDecimationFields(vtkFieldData* fd, const DecimationParameters& parameter
 /// cell data Material (active scalars). Tetrahedra stay positively oriented
 /// when the placement reverses orientation.
 void PackVolumeMesh(const SimplexMesh& mesh, const ImagePlacement& placement, vtkUnstructuredGrid* output);
+
+/// Index-space points in physical space (double precision).
+vtkSmartPointer<vtkPoints> PhysicalPoints(const std::vector<Point3>& points, const ImagePlacement& placement);
 
 /// Port 1: interface faces (triangles, or segments in 2D) in physical space,
 /// only the points they use, cell data Materials (the labels on either side).

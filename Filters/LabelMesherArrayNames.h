@@ -122,6 +122,18 @@ inline constexpr char MissedPixelsLinear[] = "MissedPixelsLinear";
 inline constexpr char MissedPixelsCurved[] = "MissedPixelsCurved";
 inline constexpr char ClaimedPixelsLinear[] = "ClaimedPixelsLinear";
 inline constexpr char ClaimedPixelsCurved[] = "ClaimedPixelsCurved";
+
+// ---- field data of the quadratic 3D mesh (vtkLabelMesher with Order 2) ----
+inline constexpr char Order[] = "Order"; ///< 2: quadratic tetrahedra
+inline constexpr char FittedEdges[] = "FittedEdges";           ///< interface edges given a fitted mid-node
+inline constexpr char PulledBackEdges[] = "PulledBackEdges";   ///< of those, pulled back at least once
+inline constexpr char CellsFailedScaledJacobian[] = "CellsFailedScaledJacobian"; ///< in some round, before pulling back
+inline constexpr char FacesFailedDistance[] = "FacesFailedDistance"; ///< in some round, before pulling back
+inline constexpr char CertifiedMinimumScaledJacobian[] = "CertifiedMinimumScaledJacobian"; ///< over the cells
+inline constexpr char SampledMinimumScaledJacobian[] = "SampledMinimumScaledJacobian"; ///< measured, lattice of step 1/4
+inline constexpr char Voxels[] = "Voxels";
+inline constexpr char MisclassifiedVoxelsLinear[] = "MisclassifiedVoxelsLinear";
+inline constexpr char MisclassifiedVoxelsQuadratic[] = "MisclassifiedVoxelsQuadratic"; ///< on the cells refined at step 1/4
 } // namespace arrays
 } // namespace labelmesher
 

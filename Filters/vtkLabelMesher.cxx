@@ -10,6 +10,7 @@
 #include "LabelMesherArrayNames.h"
 #include "MemoryBudget.h"
 #include "Mesh/MeshSelection.h"
+#include "QuadraticOutput.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/MemoryEstimate.h"
 #include "vtkBezierCurver.h"
@@ -49,6 +50,58 @@ namespace
 /// The stages' rough weights in a run's time on real images (meshing alone is a small part of
 /// meshing and decimating); each stage's progress fills its share of the whole run's.
 constexpr double kMeshWeight = 0.3, kMeshAndDecimateWeight = 1.0, kCurveWeight = 0.3;
+
+/// Order 2: `linear` (the whole decimated mesh, index space) made quadratic into `quadratic`.
+bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, const labelmesher::SimplexMesh& linear,
+  const labelmesher::ImagePlacement& placement, vtkUnstructuredGrid* quadratic, double start, double share)
+{
+  self->SetProgressText("quadratic cells");
+  self->UpdateProgress(start);
+  labelmesher::QuadraticParameters parameters;
+  parameters.ImageToMeshDistance = self->GetImageToMeshDistance();
+  parameters.MeshToImageDistance = self->GetMeshToImageDistance();
+  parameters.MinimumScaledJacobian = self->GetMinimumScaledJacobian();
+  labelmesher::QuadraticResult result;
+  try
+  {
+    // The whole box, background included: the curves keep their guarantees only with every cell
+    // certified (QuadraticCurver.h).
+    result = labelmesher::CurveQuadratic(linear, image, parameters);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(self, "Making quadratic cells failed: out of memory.");
+    return false;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorWithObjectMacro(self, "Making quadratic cells failed: " << e.what() << ".");
+    return false;
+  }
+  labelmesher::PackQuadraticMesh(result, self->GetIncludeBackground(), placement, quadratic);
+  vtkFieldData* fd = quadratic->GetFieldData();
+  labelmesher::AddQuadraticFields(fd, result, self->GetMinimumScaledJacobian());
+  labelmesher::AddScalarField(fd, arrays::ImageToMeshDistance, self->GetImageToMeshDistance());
+  labelmesher::AddScalarField(fd, arrays::MeshToImageDistance, self->GetMeshToImageDistance());
+  labelmesher::AddScalarField(fd, arrays::VoxelSize, placement.VoxelSize);
+  labelmesher::AddScalarField(fd, arrays::IncludeBackground, self->GetIncludeBackground() ? 1.0 : 0.0);
+  labelmesher::PassMaterialTable(self->GetInputDataObject(0, 0)->GetFieldData(), fd);
+  if (self->GetMeasureOutput())
+  {
+    self->SetProgressText("measure quadratic cells");
+    self->UpdateProgress(start + 0.5 * share);
+    try
+    {
+      labelmesher::AddQuadraticMeasurements(fd, image, result);
+    }
+    catch (const std::exception& e)
+    {
+      vtkWarningWithObjectMacro(self, "Measuring the quadratic mesh failed: " << e.what());
+    }
+  }
+  self->UpdateProgress(start + share);
+  return true;
+}
 
 } // namespace
 
@@ -163,11 +216,17 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkErrorMacro("Curving needs a 2D image (one extent of a single slice); this image is 3D.");
     return 1;
   }
+  if (this->Order == 2 && (GetImageDimension(input) != 3 || !this->Decimate || this->Curve))
+  {
+    vtkErrorMacro("Quadratic cells (Order 2) need a 3D image and decimation (2D images are curved into cubic "
+                  "cells with Curve).");
+    return 1;
+  }
 
   const double meshWeight = this->Decimate ? kMeshAndDecimateWeight : kMeshWeight;
   const double meshShare = meshWeight / (meshWeight + (this->Curve ? kCurveWeight : 0.0));
   const bool meshed = this->Decimate
-    ? this->MeshAndDecimate(input, this->GetInputArrayToProcess(0, inputVector), output, interfaces, meshShare)
+    ? this->MeshAndDecimate(input, this->GetInputArrayToProcess(0, inputVector), output, interfaces, curved, meshShare)
     : this->MeshOnly(input, output, interfaces, meshShare);
   if (meshed && this->Curve && !this->CurveMesh(input, output, curved, meshShare))
   {
@@ -263,8 +322,8 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
 }
 
 //------------------------------------------------------------------------------
-bool vtkLabelMesher::MeshAndDecimate(
-  vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output, vtkPolyData* boundary, double share)
+bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output,
+  vtkPolyData* boundary, vtkUnstructuredGrid* quadratic, double share)
 {
   labelmesher::ImagePlacement placement;
   labelmesher::LabelImage image;
@@ -296,6 +355,9 @@ bool vtkLabelMesher::MeshAndDecimate(
   labelmesher::StreamingParameters streaming;
   streaming.BlockCells = blockCells;
 
+  // Quadratic cells (and their measurement) take a share of the run after the decimation.
+  const double quadraticShare = this->Order == 2 ? share * 0.2 : 0.0;
+  share -= quadraticShare;
   const double runShare = share * (this->MeasureOutput ? 0.8 : 1.0);
   labelmesher::StreamedResult result;
   labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
@@ -322,6 +384,10 @@ bool vtkLabelMesher::MeshAndDecimate(
   }
 
   labelmesher::DecimationResult& decimated = result.Decimated;
+  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, share, quadraticShare))
+  {
+    return false;
+  }
   const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(decimated.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
   labelmesher::PackInterfaces(decimated.Interfaces, decimated.InterfaceMaterials, placement, boundary);
@@ -381,4 +447,5 @@ void vtkLabelMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";
   os << indent << "QualityIterations: " << this->QualityIterations << "\n";
   os << indent << "MinimumScaledJacobian: " << this->MinimumScaledJacobian << "\n";
+  os << indent << "Order: " << this->Order << "\n";
 }

@@ -32,6 +32,18 @@
  * MinimumAngle between the edges' tangents (vtkBezierCurver's
  * MinimumCornerAngle); the cubic Bezier mesh is output port 2.
  *
+ * Order 2 (3D images, with Decimate): the decimated mesh becomes quadratic
+ * tetrahedra (Quadratic/QuadraticCurver.h), output port 2: the mid-nodes of
+ * interface edges fitted to the image, every cell's min det J / max det J
+ * certified at least MinimumScaledJacobian by the Bernstein coefficients of
+ * det J, both distance bounds certified on the curved interfaces, curves that
+ * fail pulled back towards straight; interior edges, box faces and junction
+ * curves stay straight. Cell data Material and ScaledJacobian (the certified
+ * lower bound); field data Order, MinimumScaledJacobianBound,
+ * CertifiedMinimumScaledJacobian, FittedEdges, CurvedEdges, PulledBackEdges,
+ * CellsFailedScaledJacobian, FacesFailedDistance and, with MeasureOutput,
+ * the independent measurements (QuadraticOutput.h).
+ *
  * Input port 0: the label image, as vtkLabelOctreeMesher's (integer point
  * scalars or the array selected with SetInputArrayToProcess(0, 0, 0, POINTS,
  * name); 2D when one extent is a single slice).
@@ -63,7 +75,8 @@
  *
  * @warning Errors (one message) for an image that is not a label image (as
  * vtkLabelOctreeMesher), a MinimumAngle outside (0, GetProvenAngleBound], a
- * run estimated not to fit in memory, Curve on a 3D image, and a curving that
+ * run estimated not to fit in memory, Curve on a 3D image, Order 2 on a 2D
+ * image or without Decimate (or with Curve), and a curving that
  * fails: the outputs are then empty. A curving whose untangling fails is an
  * error too, but port 2 then holds the curver's marked mesh (cell data Valid),
  * to inspect, and ports 0 and 1 the linear mesh.
@@ -236,9 +249,18 @@ public:
 
   ///@{
   /**
+   * The order of the 3D output on port 2: 1 (default: none) or 2 (quadratic
+   * tetrahedra fitted to the image; 3D images, with Decimate).
+   */
+  vtkSetClampMacro(Order, int, 1, 2);
+  vtkGetMacro(Order, int);
+  ///@}
+
+  ///@{
+  /**
    * The smallest certified scaled Jacobian (min det J / max det J) of every
    * curved cell, as vtkBezierCurver's MinimumScaledJacobian: [0, 1), default
-   * 0.1.
+   * 0.1. Also the quadratic mesh's (Order 2).
    */
   vtkSetClampMacro(MinimumScaledJacobian, double, 0.0, 0.999);
   vtkGetMacro(MinimumScaledJacobian, double);
@@ -250,7 +272,7 @@ public:
   vtkPolyData* GetInterfacesOutput();
 
   /**
-   * The curved mesh (output port 2; empty unless Curve is on).
+   * The curved mesh (output port 2; empty unless Curve is on or Order is 2).
    */
   vtkUnstructuredGrid* GetCurvedOutput();
 
@@ -279,11 +301,13 @@ protected:
   int MaximumShorteningRounds = 8;
   int QualityIterations = 0;
   double MinimumScaledJacobian = 0.1;
+  int Order = 1;
 
 private:
   // The stages; each returns false when the run ends there (error, abort, no cells).
+  /// With Order 2, also the quadratic mesh into `quadratic`.
   bool MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output,
-    vtkPolyData* interfaces, double share);
+    vtkPolyData* interfaces, vtkUnstructuredGrid* quadratic, double share);
   bool MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share);
   /// False when stopped on request before the curver made its mesh.
   bool CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start);

@@ -152,7 +152,6 @@ void ChooseDecimation(Reading& reading, const std::string& option);
 struct Reading
 {
   Arguments& Args;
-  std::string CurveOption;        ///< the first curve-only option given
   std::string DecimateOption;     ///< --decimate or --no-decimate, if given
   std::set<std::string> Given;    ///< the long names of the options given
 };
@@ -215,6 +214,16 @@ const std::vector<Option>& Options()
       "(0, " + ProvenBound(3) + "] in 3D, (0, " + ProvenBound(2) + "] in 2D                [default 15];\n"
       "curve: also every curved cell's corner angle",
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
+    { nullptr, "--order", "1|2", false,
+      "mesh: element order; 2 also makes quadratic tetrahedra\n"
+      "fitted to the image (3D, decimated): certified valid,\n"
+      "--min-scaled-jacobian, both distance bounds; written as\n"
+      ".vtu .vtk .msh .inp                         [default 1]",
+      [](Reading& r, const std::string& v) {
+        r.Args.Settings.Order = ParseCount("--order", v, 1);
+        if (r.Args.Settings.Order > 2)
+          throw UsageError("--order expects 1 (linear) or 2 (quadratic)");
+      } },
     { nullptr, "--no-decimate", nullptr, false,
       "keep the initial mesh (angles >= " + ProvenBound(3) + " 3D, " + ProvenBound(2) + " 2D)",
       [](Reading& r, const std::string&) { ChooseDecimation(r, "--no-decimate"); } },
@@ -269,7 +278,8 @@ const std::vector<Option>& Options()
     { nullptr, "--min-scaled-jacobian", "R", true,
       "every curved cell's certified min det J / max det J\n"
       "at least R, in [0, 1): curves pulled back until it\n"
-      "holds (0: validity alone)                   [default 0.1]",
+      "holds (0: validity alone; also mesh --order 2)\n"
+      "                                            [default 0.1]",
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumScaledJacobian = ParseScaledJacobian(v); } },
     { nullptr, "--quality-iterations", "N", true,
       "further fraction doublings kept when the worst\n"
@@ -346,7 +356,7 @@ std::string Usage()
 Arguments ParseArguments(int argc, const char* const* argv)
 {
   Arguments args;
-  Reading reading{ args, {}, {}, {} };
+  Reading reading{ args, {}, {} };
   std::vector<std::string> words(argv + 1, argv + argc);
   std::vector<std::string> positional;
   for (std::size_t w = 0; w < words.size(); ++w)
@@ -386,10 +396,6 @@ Arguments ParseArguments(int argc, const char* const* argv)
       }
       value = words[++w];
     }
-    if (option->CurveOnly && reading.CurveOption.empty())
-    {
-      reading.CurveOption = word;
-    }
     reading.Given.insert(option->Long);
     option->Apply(reading, value);
   }
@@ -421,9 +427,22 @@ Arguments ParseArguments(int argc, const char* const* argv)
   {
     throw UsageError("--min-angle is the decimator's bound: it cannot go with --no-decimate");
   }
-  if (args.Command == "mesh" && !reading.CurveOption.empty())
+  if (given("--order") && args.Command == "curve")
   {
-    throw UsageError(reading.CurveOption + " applies to 'curve' only");
+    throw UsageError("--order applies to 'mesh' ('curve' makes cubic cells)");
+  }
+  if (args.Settings.Order == 2 && !args.Settings.Decimate)
+  {
+    throw UsageError("--order 2 curves the decimated mesh: it cannot go with --no-decimate");
+  }
+  for (const Option& option : Options())
+  {
+    // The scaled Jacobian bound applies to the quadratic mesh too; the others to 'curve' alone.
+    const bool quadraticOption = args.Settings.Order == 2 && std::string(option.Long) == "--min-scaled-jacobian";
+    if (args.Command == "mesh" && option.CurveOnly && given(option.Long) && !quadraticOption)
+    {
+      throw UsageError(std::string(option.Long) + " applies to 'curve' only");
+    }
   }
   if (positional.size() < 2)
   {
@@ -451,6 +470,11 @@ Arguments ParseArguments(int argc, const char* const* argv)
     if (args.Command == "curve" && !labelmesher::io::HoldsCurvedCells(*format))
     {
       throw UsageError("output '" + output + "': curved (cubic) cells can be written as .vtu, .vtk or .msh only");
+    }
+    if (args.Settings.Order == 2 && !labelmesher::io::HoldsQuadraticCells(*format))
+    {
+      throw UsageError("output '" + output + "': quadratic tetrahedra can be written as .vtu, .vtk, .msh or .inp "
+                       "only");
     }
     if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=
       args.Outputs.begin() + static_cast<std::ptrdiff_t>(i))

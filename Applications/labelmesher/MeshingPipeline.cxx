@@ -44,6 +44,7 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetMeasureOutput(settings.Measure);
   mesher->SetMemoryLimit(settings.MemoryLimit);
   mesher->SetCurve(settings.Curve);
+  mesher->SetOrder(settings.Order);
   mesher->SetSmoothness(settings.Smoothness);
   mesher->SetTension(settings.Tension);
   mesher->SetMaximumUntanglingSteps(settings.MaximumUntanglingSteps);
@@ -80,6 +81,10 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   {
     out.Curved = CopyOf(curved);
     out.CurveError = messages.Error;
+  }
+  else if (settings.Order == 2)
+  {
+    out.Curved = CopyOf(curved);
   }
   return out;
 }

@@ -54,8 +54,11 @@ struct MeshingSettings
   int MaximumUntanglingSteps = FilterDefaults()->GetMaximumUntanglingSteps();
   int MaximumShorteningRounds = FilterDefaults()->GetMaximumShorteningRounds();
   int QualityIterations = FilterDefaults()->GetQualityIterations();
-  /// Every curved cell's certified min det J / max det J at least this, [0, 1).
+  /// Every curved cell's certified min det J / max det J at least this, [0, 1) (curve, and mesh
+  /// with Order 2).
   double MinimumScaledJacobian = FilterDefaults()->GetMinimumScaledJacobian();
+  /// `mesh`: 1 linear tetrahedra, 2 also quadratic ones fitted to the image (3D, decimated).
+  int Order = FilterDefaults()->GetOrder();
 };
 
 struct MeshingOutcome
@@ -63,7 +66,8 @@ struct MeshingOutcome
   vtkSmartPointer<vtkUnstructuredGrid> Mesh;    ///< the linear mesh (decimated unless Decimate is off)
   vtkSmartPointer<vtkPolyData> Interfaces;      ///< faces between materials, on Mesh's points
   /// With Curve: the cubic Bezier mesh curved from Mesh. When CurveError is set (untangling
-  /// failed) it is the curver's marked mesh (cell data Valid), to inspect, not to use.
+  /// failed) it is the curver's marked mesh (cell data Valid), to inspect, not to use. With
+  /// Order 2: the quadratic tetrahedra made from Mesh.
   vtkSmartPointer<vtkUnstructuredGrid> Curved;
   std::string CurveError;
   std::string Warning;                          ///< the filters' first warning, empty if none

@@ -123,6 +123,12 @@ int Run(const Arguments& args)
     throw RunError("'curve' needs a 2D image (one extent of a single slice); '" + args.Input +
       "' is 3D");
   }
+  const bool quadratic = args.Settings.Order == 2;
+  if (quadratic && IsTwoDimensional(image))
+  {
+    throw RunError("'--order 2' makes quadratic tetrahedra of a 3D image; '" + args.Input +
+      "' is 2D (curve it into cubic triangles with 'labelmesher curve')");
+  }
   for (const std::string& output : args.Outputs)
   {
     if (IsTwoDimensional(image) && labelmesher::io::FormatOfPath(output) == labelmesher::io::MeshFormat::Stl)
@@ -143,8 +149,12 @@ int Run(const Arguments& args)
   }
 
   const auto writeStart = std::chrono::steady_clock::now();
-  // The curved mesh is written without interfaces (its boundaries are the curves).
-  const std::vector<std::string> written = curve
+  // The curved and quadratic meshes are written without interfaces (their boundaries are curved).
+  if (quadratic && (!meshed.Curved || meshed.Curved->GetNumberOfCells() == 0))
+  {
+    throw RunError("making quadratic cells produced no cells");
+  }
+  const std::vector<std::string> written = curve || quadratic
     ? WriteOutputs(args, meshed.Curved, nullptr, table)
     : WriteOutputs(args, meshed.Mesh, meshed.Interfaces, table);
   RunContext context;
@@ -155,13 +165,19 @@ int Run(const Arguments& args)
   context.PeakMemory = labelmesher::PeakResidentBytes() / 1048576.0;
   context.TimingsBefore = { { "read", readSeconds } };
   context.TimingsAfter = { { "write", Seconds(writeStart) } };
-  const RunReports reports = MakeRunReports(context, image, meshed.Mesh, curve ? meshed.Curved.GetPointer() : nullptr);
+  const RunReports reports =
+    MakeRunReports(context, image, meshed.Mesh, curve || quadratic ? meshed.Curved.GetPointer() : nullptr);
   if (!reports.Curved)
   {
     WriteReport(args.Report, reports.Linear, WriteJson);
     if (!args.Quiet)
     {
       PrintSummary(reports.Linear, std::cout);
+    }
+    if (!QuadraticHolds(reports.Linear))
+    {
+      throw RunError("the quadratic mesh breaks its scaled Jacobian or a distance bound as measured (see the "
+                     "report); it is written for inspection");
     }
     return 0;
   }

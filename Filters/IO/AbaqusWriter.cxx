@@ -64,7 +64,7 @@ const char* ElementType(const ExportMesh& mesh)
 {
   if (mesh.Dimension == 3)
   {
-    return "C3D4";
+    return mesh.Order == 2 ? "C3D10" : "C3D4"; // C3D10's node order is VTK's
   }
   return mesh.FlatAxis >= 0 ? "CPS3" : "S3";
 }
@@ -73,7 +73,7 @@ const char* ElementType(const ExportMesh& mesh)
 
 void WriteAbaqus(const ExportMesh& mesh, std::ostream& out)
 {
-  if (mesh.Order != 1)
+  if (mesh.Order == 3)
     throw WriteError("Abaqus .inp has no cubic triangle: write the curved mesh as .msh, .vtu or .vtk");
   TextOut text(out);
   const std::vector<std::string> setNames = MaterialSetNames(mesh);
@@ -107,7 +107,7 @@ void WriteAbaqus(const ExportMesh& mesh, std::ostream& out)
     const auto g = mesh.MaterialCells[i];
     for (std::size_t c = g.Begin; c < g.End; ++c)
     {
-      std::array<std::int64_t, 4> cell{};
+      std::array<std::int64_t, 10> cell{};
       std::copy_n(mesh.Cells.begin() + static_cast<std::ptrdiff_t>(c * nodes), nodes, cell.begin());
       if (mesh.Dimension == 2 && mesh.FlatAxis >= 0 && PlanarArea(mesh, cell.data()) < 0.0)
       {

@@ -121,12 +121,14 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
     throw WriteError("the mesh has no Material cell array");
   }
   int cellType = nCells > 0 ? mesh->GetCellType(0) : VTK_TETRA;
-  if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE && cellType != VTK_BEZIER_TRIANGLE)
+  if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE && cellType != VTK_BEZIER_TRIANGLE &&
+    cellType != VTK_QUADRATIC_TETRA)
   {
-    throw WriteError("only linear tetrahedra and triangles, and cubic Bezier triangles, can be written");
+    throw WriteError("only linear tetrahedra and triangles, quadratic tetrahedra and cubic Bezier triangles can "
+                     "be written");
   }
-  out.Dimension = cellType == VTK_TETRA ? 3 : 2;
-  out.Order = cellType == VTK_BEZIER_TRIANGLE ? 3 : 1;
+  out.Dimension = cellType == VTK_TETRA || cellType == VTK_QUADRATIC_TETRA ? 3 : 2;
+  out.Order = cellType == VTK_BEZIER_TRIANGLE ? 3 : cellType == VTK_QUADRATIC_TETRA ? 2 : 1;
   const int nodes = out.NodesPerCell();
 
   out.Points.resize(static_cast<std::size_t>(mesh->GetNumberOfPoints()));

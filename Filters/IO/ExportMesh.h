@@ -36,7 +36,9 @@ struct ExportMesh
 
   int Dimension = 3; ///< 3: tetrahedra, interface triangles; 2: triangles, interface segments
   /// 1: linear cells; 3 (2D only): cubic triangles, ten Lagrange nodes each in VTK's (and Gmsh's)
-  /// order, corners, then two per edge (0-1, 1-2, 2-0) from its first corner, then the centre.
+  /// order, corners, then two per edge (0-1, 1-2, 2-0) from its first corner, then the centre;
+  /// 2 (3D only): quadratic tetrahedra, ten nodes in VTK's order (corners, then the mid-nodes of
+  /// edges 0-1, 1-2, 2-0, 0-3, 1-3, 2-3: Abaqus C3D10's; Gmsh swaps the last two).
   int Order = 1;
   std::vector<std::array<double, 3>> Points;
   /// Cells: NodesPerCell() point indices each, sorted by material.
@@ -53,7 +55,7 @@ struct ExportMesh
   /// of planar formats drop it); otherwise -1.
   int FlatAxis = -1;
 
-  int NodesPerCell() const { return this->Order == 3 ? 10 : this->Dimension + 1; }
+  int NodesPerCell() const { return this->Order > 1 ? 10 : this->Dimension + 1; }
   int NodesPerFace() const { return this->Dimension; }
   std::size_t NumberOfCells() const { return this->CellMaterial.size(); }
   std::size_t NumberOfFaces() const { return this->Faces.size() / static_cast<std::size_t>(this->NodesPerFace()); }
@@ -69,7 +71,8 @@ std::vector<std::size_t> WrittenAxes(const ExportMesh& mesh);
 /// triangles flip those with a negative area.
 double PlanarArea(const ExportMesh& mesh, const std::int64_t* cell);
 
-/// Gathers `mesh` (VTK_TETRA or VTK_TRIANGLE cells with cell array Material)
+/// Gathers `mesh` (VTK_TETRA, VTK_TRIANGLE, VTK_BEZIER_TRIANGLE (cubic) or VTK_QUADRATIC_TETRA
+/// cells, one type, with cell array Material)
 /// and `interfaces` (triangles or lines with cell array Materials; may be null:
 /// no faces) whose points must be points of `mesh`. Throws WriteError when they
 /// are not (curved cells, mixed types, an interface point off the mesh).

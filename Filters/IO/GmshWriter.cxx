@@ -15,13 +15,24 @@ namespace io
 namespace
 {
 
-constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshCubicTriangle = 21;
+constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshQuadraticTetrahedron = 11,
+              GmshCubicTriangle = 21;
 
 int CellType(const ExportMesh& mesh)
 {
   if (mesh.Order == 3)
     return GmshCubicTriangle; // 10 nodes in VTK's order
+  if (mesh.Order == 2)
+    return GmshQuadraticTetrahedron;
   return mesh.Dimension == 3 ? GmshTetrahedron : GmshTriangle;
+}
+
+/// Gmsh's position k holds VTK's node order[k]: its 10-node tetrahedron has the mid-nodes of
+/// edges 2-3 and 1-3 the other way round (VTK: 1-3, then 2-3). Null: the same order.
+const int* NodeOrder(const ExportMesh& mesh)
+{
+  static constexpr int kTetra10[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 9, 8 };
+  return mesh.Order == 2 ? kTetra10 : nullptr;
 }
 int FaceType(const ExportMesh& mesh)
 {
@@ -81,7 +92,7 @@ void WriteBox(const ExportMesh& mesh, const std::vector<std::int64_t>& indices, 
 }
 
 void WriteElementLines(const std::vector<std::int64_t>& indices, ExportMesh::Group g, int nodes,
-  std::int64_t& tag, const std::string& tagsBetween, TextOut& text)
+  std::int64_t& tag, const std::string& tagsBetween, TextOut& text, const int* order = nullptr)
 {
   for (std::size_t e = g.Begin; e < g.End; ++e)
   {
@@ -92,7 +103,8 @@ void WriteElementLines(const std::vector<std::int64_t>& indices, ExportMesh::Gro
     }
     for (int k = 0; k < nodes; ++k)
     {
-      text.Char(' ').Int(indices[e * static_cast<std::size_t>(nodes) + static_cast<std::size_t>(k)] + 1);
+      const int node = order ? order[k] : k;
+      text.Char(' ').Int(indices[e * static_cast<std::size_t>(nodes) + static_cast<std::size_t>(node)] + 1);
     }
     text.Char('\n');
   }
@@ -165,7 +177,7 @@ void WriteGmsh41(const ExportMesh& mesh, std::ostream& out)
     const auto g = mesh.MaterialCells[i];
     text.Int(mesh.Dimension).Char(' ').Int(static_cast<std::int64_t>(i + 1)).Char(' ').Int(CellType(mesh)).Char(' ')
       .Int(static_cast<std::int64_t>(g.End - g.Begin)).Char('\n');
-    WriteElementLines(mesh.Cells, g, mesh.NodesPerCell(), tag, "", text);
+    WriteElementLines(mesh.Cells, g, mesh.NodesPerCell(), tag, "", text, NodeOrder(mesh));
   }
   for (std::size_t i = 0; i < nInterfaces; ++i)
   {
@@ -196,7 +208,7 @@ void WriteGmsh22(const ExportMesh& mesh, std::ostream& out)
   {
     const std::string tags = " " + std::to_string(CellType(mesh)) + " 2 " +
       std::to_string(GmshPhysicalTag(mesh, mesh.Materials[i])) + " " + std::to_string(i + 1);
-    WriteElementLines(mesh.Cells, mesh.MaterialCells[i], mesh.NodesPerCell(), tag, tags, text);
+    WriteElementLines(mesh.Cells, mesh.MaterialCells[i], mesh.NodesPerCell(), tag, tags, text, NodeOrder(mesh));
   }
   for (std::size_t i = 0; i < mesh.Interfaces.size(); ++i)
   {

@@ -29,8 +29,11 @@ std::int64_t MeditInterfaceReference(const ExportMesh& mesh, std::size_t index)
 
 void WriteMedit(const ExportMesh& mesh, std::ostream& out)
 {
-  if (mesh.Order != 1)
+  if (mesh.Order == 3)
     throw WriteError("Medit .mesh has no cubic triangle: write the curved mesh as .msh, .vtu or .vtk");
+  if (mesh.Order == 2)
+    throw WriteError("Medit .mesh: the node order of TetrahedraP2 could not be checked against a reader here; "
+                     "write the quadratic mesh as .msh, .inp, .vtu or .vtk");
   TextOut text(out);
   const bool planar = mesh.Dimension == 2 && mesh.FlatAxis >= 0;
   const std::vector<std::size_t> axes = WrittenAxes(mesh);

@@ -104,6 +104,11 @@ bool HoldsCurvedCells(MeshFormat format)
   return format == MeshFormat::Vtu || format == MeshFormat::LegacyVtk || format == MeshFormat::Gmsh;
 }
 
+bool HoldsQuadraticCells(MeshFormat format)
+{
+  return HoldsCurvedCells(format) || format == MeshFormat::Abaqus;
+}
+
 MeshFileWriter::MeshFileWriter(
   vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, const MaterialTable& table, const WriteOptions& options)
   : Table(table)

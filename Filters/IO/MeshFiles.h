@@ -57,6 +57,10 @@ std::string KnownExtensions();
 /// True for the formats that hold curved (cubic) cells: .vtu, .vtk (Bezier cells) and .msh
 /// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);
+/// Formats that hold quadratic tetrahedra (VTK_QUADRATIC_TETRA): .vtu, .vtk, .msh (10-node),
+/// .inp (C3D10). Not .mesh: the node order of Medit's TetrahedraP2 could not be checked here (no
+/// reader of it in Debian's meshio).
+bool HoldsQuadraticCells(MeshFormat format);
 
 struct WriteOptions
 {

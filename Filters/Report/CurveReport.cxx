@@ -157,7 +157,8 @@ RunReports MakeRunReports(const RunContext& context, vtkImageData* image, vtkUns
   linear.StartMemory = context.StartMemory;
   linear.PeakMemory = context.PeakMemory;
   linear.Timings.insert(linear.Timings.begin(), context.TimingsBefore.begin(), context.TimingsBefore.end());
-  if (!curved || curved->GetNumberOfCells() == 0)
+  AddQuadratic(linear, curved);
+  if (!curved || curved->GetNumberOfCells() == 0 || linear.Quadratic)
   {
     linear.Timings.insert(linear.Timings.end(), context.TimingsAfter.begin(), context.TimingsAfter.end());
     return reports;

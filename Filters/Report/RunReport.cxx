@@ -3,6 +3,7 @@
 #include "RunReport.h"
 
 #include "JsonWriter.h"
+#include "QuadraticReport.h"
 
 #include "LabelMesherArrayNames.h"
 #include "vtkLabelMesher.h"
@@ -287,6 +288,7 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     }
     out << "\n";
   }
+  PrintQuadraticSummary(r, out);
 }
 
 void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonWriter& j)
@@ -467,6 +469,7 @@ void WriteJson(const RunReport& r, std::ostream& out)
   }
   j.Key("interface_faces").Integer(r.InterfaceFaces);
   j.EndObject();
+  WriteQuadraticJson(r, j);
   j.EndObject();
 }
 

@@ -55,6 +55,18 @@ struct DecimationEntry
   long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0, BorderPasses = 0, LargestAssembledCells = 0;
 };
 
+/// The quadratic mesh of Order 2 (vtkLabelMesher's port 2 field data, QuadraticOutput.h).
+struct QuadraticEntry
+{
+  long long Cells = 0, Points = 0;
+  long long FittedEdges = 0, CurvedEdges = 0, PulledBackEdges = 0;
+  long long CellsFailedScaledJacobian = 0, FacesFailedDistance = 0;
+  double ScaledJacobianBound = 0.0, CertifiedMinimumScaledJacobian = 0.0;
+  /// Present when measured (independently of the curver's certificates).
+  std::optional<double> SampledMinimumScaledJacobian, MeasuredImageToMesh, MeasuredMeshToImage, MeasureResolution;
+  std::optional<double> Voxels, MisclassifiedLinear, MisclassifiedQuadratic;
+};
+
 struct RunReport
 {
   std::string Input;
@@ -80,6 +92,7 @@ struct RunReport
   std::optional<double> OverSharedFaces, HangingVertices, NonManifoldBoundaryEdges;
   std::vector<TopologyEntry> Topology;
   std::optional<DecimationEntry> Decimation; ///< absent with --no-decimate
+  std::optional<QuadraticEntry> Quadratic;   ///< present with Order 2 (AddQuadratic)
   std::vector<std::pair<std::string, double>> Timings; ///< stage, seconds
   /// Memory, MiB: the estimate the mesher checked before it started (absent if it did not), the
   /// resident memory when the pipeline started (the image read) and the process's peak.
@@ -103,6 +116,12 @@ std::string FormatFixed(double value, int digits);
 /// material table and timings its field data records. Outputs, Notes and the memory figures are
 /// the caller's to add.
 RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructuredGrid* mesh);
+/// Adds the quadratic mesh of port 2 when it is one (field Order 2).
+void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic);
+/// True when the quadratic mesh keeps its guarantees as recorded: the certified scaled Jacobian
+/// at least its bound and, when measured, the sampled one too, and both distances within the
+/// bounds up to the measure's resolution. True when there is none.
+bool QuadraticHolds(const RunReport& report);
 /// The angle bound the mesh keeps, degrees: the decimation's, or without it the initial mesh's
 /// proven bound.
 double AngleBoundOf(const RunReport& report);

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The quadratic mesh's part of the run report: gathered from its field data, printed, in JSON.
+#include "QuadraticReport.h"
+
+#include "LabelMesherArrayNames.h"
+#include "JsonWriter.h"
+
+#include "vtkFieldData.h"
+#include "vtkUnstructuredGrid.h"
+
+namespace labelmesher
+{
+namespace report
+{
+
+void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic)
+{
+  if (!quadratic || quadratic->GetNumberOfCells() == 0)
+    return;
+  vtkFieldData* fd = quadratic->GetFieldData();
+  if (FieldCount(fd, arrays::Order) != 2)
+    return;
+  QuadraticEntry q;
+  q.Cells = quadratic->GetNumberOfCells();
+  q.Points = quadratic->GetNumberOfPoints();
+  q.FittedEdges = FieldCount(fd, arrays::FittedEdges);
+  q.CurvedEdges = FieldCount(fd, arrays::CurvedEdges);
+  q.PulledBackEdges = FieldCount(fd, arrays::PulledBackEdges);
+  q.CellsFailedScaledJacobian = FieldCount(fd, arrays::CellsFailedScaledJacobian);
+  q.FacesFailedDistance = FieldCount(fd, arrays::FacesFailedDistance);
+  q.ScaledJacobianBound = FieldValue(fd, arrays::MinimumScaledJacobianBound).value_or(0.0);
+  q.CertifiedMinimumScaledJacobian = FieldValue(fd, arrays::CertifiedMinimumScaledJacobian).value_or(0.0);
+  q.SampledMinimumScaledJacobian = FieldValue(fd, arrays::SampledMinimumScaledJacobian);
+  q.MeasuredImageToMesh = FieldValue(fd, arrays::MeasuredImageToMeshDistance);
+  q.MeasuredMeshToImage = FieldValue(fd, arrays::MeasuredMeshToImageDistance);
+  q.MeasureResolution = FieldValue(fd, arrays::CurvedMeasureResolution);
+  q.Voxels = FieldValue(fd, arrays::Voxels);
+  q.MisclassifiedLinear = FieldValue(fd, arrays::MisclassifiedVoxelsLinear);
+  q.MisclassifiedQuadratic = FieldValue(fd, arrays::MisclassifiedVoxelsQuadratic);
+  report.Quadratic = q;
+}
+
+bool QuadraticHolds(const RunReport& report)
+{
+  if (!report.Quadratic)
+    return true;
+  const QuadraticEntry& q = *report.Quadratic;
+  const bool certified = q.CertifiedMinimumScaledJacobian > 0.0 && q.CertifiedMinimumScaledJacobian >= q.ScaledJacobianBound;
+  const bool sampled = !q.SampledMinimumScaledJacobian || *q.SampledMinimumScaledJacobian >= q.ScaledJacobianBound;
+  const double slack = q.MeasureResolution.value_or(0.0) + 1e-9;
+  const bool distances = !q.MeasuredImageToMesh ||
+    (*q.MeasuredImageToMesh <= report.ImageToMeshBound + slack && *q.MeasuredMeshToImage <= report.MeshToImageBound + slack);
+  return certified && sampled && distances;
+}
+
+void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
+{
+  if (!report.Quadratic)
+    return;
+  const QuadraticEntry& q = *report.Quadratic;
+  out << "Quadratic mesh: " << q.Cells << " quadratic tetrahedra, " << q.Points << " nodes; " << q.CurvedEdges
+      << " curved interface edges (" << q.FittedEdges << " fitted, " << q.PulledBackEdges << " pulled back)\n";
+  out << "  scaled Jacobian (min det J / max det J) >= " << FormatFixed(q.CertifiedMinimumScaledJacobian, 3)
+      << " certified (bound " << FormatFixed(q.ScaledJacobianBound, 3) << ")";
+  if (q.SampledMinimumScaledJacobian)
+    out << ", " << FormatFixed(*q.SampledMinimumScaledJacobian, 3) << " sampled";
+  out << "\n";
+  if (q.MeasuredImageToMesh)
+    out << "  curved interfaces: h(I,M) " << FormatFixed(*q.MeasuredImageToMesh, 3) << ", h(M,I) "
+        << FormatFixed(*q.MeasuredMeshToImage, 3) << " voxels measured (bounds " << FormatFixed(report.ImageToMeshBound, 3)
+        << " / " << FormatFixed(report.MeshToImageBound, 3) << ", resolution " << FormatFixed(q.MeasureResolution.value_or(0), 4)
+        << ")\n";
+  if (q.MisclassifiedLinear && q.MisclassifiedQuadratic && q.Voxels)
+  {
+    out << "  misclassified voxels (of " << static_cast<long long>(*q.Voxels) << "): linear "
+        << static_cast<long long>(*q.MisclassifiedLinear) << ", quadratic "
+        << static_cast<long long>(*q.MisclassifiedQuadratic);
+    if (*q.MisclassifiedLinear > 0)
+      out << " (" << FormatFixed(100.0 * (*q.MisclassifiedQuadratic - *q.MisclassifiedLinear) / *q.MisclassifiedLinear, 1)
+          << " %)";
+    out << "\n";
+  }
+}
+
+void WriteQuadraticJson(const RunReport& report, JsonWriter& j)
+{
+  j.Key("quadratic");
+  if (!report.Quadratic)
+  {
+    j.Null();
+    return;
+  }
+  const QuadraticEntry& q = *report.Quadratic;
+  auto optional = [&](const char* key, const std::optional<double>& value) {
+    j.Key(key);
+    if (value)
+      j.Number(*value);
+    else
+      j.Null();
+  };
+  j.BeginObject();
+  j.Key("cells").Integer(q.Cells);
+  j.Key("nodes").Integer(q.Points);
+  j.Key("fitted_edges").Integer(q.FittedEdges);
+  j.Key("curved_edges").Integer(q.CurvedEdges);
+  j.Key("pulled_back_edges").Integer(q.PulledBackEdges);
+  j.Key("cells_failed_scaled_jacobian").Integer(q.CellsFailedScaledJacobian);
+  j.Key("faces_failed_distance").Integer(q.FacesFailedDistance);
+  j.Key("scaled_jacobian_bound").Number(q.ScaledJacobianBound);
+  j.Key("certified_minimum_scaled_jacobian").Number(q.CertifiedMinimumScaledJacobian);
+  optional("sampled_minimum_scaled_jacobian", q.SampledMinimumScaledJacobian);
+  optional("measured_image_to_mesh", q.MeasuredImageToMesh);
+  optional("measured_mesh_to_image", q.MeasuredMeshToImage);
+  optional("measure_resolution", q.MeasureResolution);
+  optional("voxels", q.Voxels);
+  optional("misclassified_linear", q.MisclassifiedLinear);
+  optional("misclassified_quadratic", q.MisclassifiedQuadratic);
+  j.Key("guarantees_hold").Bool(QuadraticHolds(report));
+  j.EndObject();
+}
+
+} // namespace report
+} // namespace labelmesher

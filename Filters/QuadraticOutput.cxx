@@ -105,6 +105,9 @@ void AddQuadraticFields(vtkFieldData* fd, const QuadraticResult& result, double 
   AddScalarField(fd, arrays::PulledBackEdges, static_cast<double>(result.ShortenedEdges));
   AddScalarField(fd, arrays::CellsFailedScaledJacobian, static_cast<double>(result.CellsFailedQuality));
   AddScalarField(fd, arrays::FacesFailedDistance, static_cast<double>(result.FacesFailedDistance));
+  AddScalarField(fd, arrays::CertificationRounds, static_cast<double>(result.Rounds));
+  AddScalarField(fd, arrays::UntangledEdges, static_cast<double>(result.UntangledEdges));
+  AddScalarField(fd, arrays::PinnedEdges, static_cast<double>(result.PinnedEdges));
 }
 
 void AddQuadraticMeasurements(vtkFieldData* fd, const LabelImage& image, const QuadraticResult& result)

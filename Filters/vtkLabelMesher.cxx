@@ -53,7 +53,8 @@ constexpr double kMeshWeight = 0.3, kMeshAndDecimateWeight = 1.0, kCurveWeight =
 
 /// Order 2: `linear` (the whole decimated mesh, index space) made quadratic into `quadratic`.
 bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, const labelmesher::SimplexMesh& linear,
-  const labelmesher::ImagePlacement& placement, vtkUnstructuredGrid* quadratic, double start, double share)
+  const labelmesher::ImagePlacement& placement, vtkUnstructuredGrid* quadratic, double start, double share,
+  std::vector<labelmesher::StageTiming>& timings)
 {
   self->SetProgressText("quadratic cells");
   self->UpdateProgress(start);
@@ -78,6 +79,8 @@ bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, c
     vtkErrorWithObjectMacro(self, "Making quadratic cells failed: " << e.what() << ".");
     return false;
   }
+  timings.push_back({ "quadratic fit", result.FitSeconds });
+  timings.push_back({ "quadratic certify", result.CertifySeconds });
   labelmesher::PackQuadraticMesh(result, self->GetIncludeBackground(), placement, quadratic);
   vtkFieldData* fd = quadratic->GetFieldData();
   labelmesher::AddQuadraticFields(fd, result, self->GetMinimumScaledJacobian());
@@ -92,7 +95,9 @@ bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, c
     self->UpdateProgress(start + 0.5 * share);
     try
     {
+      labelmesher::StageClock clock(timings);
       labelmesher::AddQuadraticMeasurements(fd, image, result);
+      clock.Finish("measure: quadratic");
     }
     catch (const std::exception& e)
     {
@@ -384,7 +389,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
 
   labelmesher::DecimationResult& decimated = result.Decimated;
-  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, share, quadraticShare))
+  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, share, quadraticShare, decimated.Timings))
   {
     return false;
   }

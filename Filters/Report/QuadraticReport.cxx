@@ -28,6 +28,9 @@ void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic)
   q.PulledBackEdges = FieldCount(fd, arrays::PulledBackEdges);
   q.CellsFailedScaledJacobian = FieldCount(fd, arrays::CellsFailedScaledJacobian);
   q.FacesFailedDistance = FieldCount(fd, arrays::FacesFailedDistance);
+  q.Rounds = FieldCount(fd, arrays::CertificationRounds);
+  q.UntangledEdges = FieldCount(fd, arrays::UntangledEdges);
+  q.PinnedEdges = FieldCount(fd, arrays::PinnedEdges);
   q.ScaledJacobianBound = FieldValue(fd, arrays::MinimumScaledJacobianBound).value_or(0.0);
   q.CertifiedMinimumScaledJacobian = FieldValue(fd, arrays::CertifiedMinimumScaledJacobian).value_or(0.0);
   q.SampledMinimumScaledJacobian = FieldValue(fd, arrays::SampledMinimumScaledJacobian);
@@ -59,7 +62,8 @@ void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
     return;
   const QuadraticEntry& q = *report.Quadratic;
   out << "Quadratic mesh: " << q.Cells << " quadratic tetrahedra, " << q.Points << " nodes; " << q.CurvedEdges
-      << " curved interface edges (" << q.FittedEdges << " fitted, " << q.PulledBackEdges << " pulled back)\n";
+      << " curved interface edges (" << q.FittedEdges << " fitted, " << q.PulledBackEdges << " pulled back), "
+      << q.UntangledEdges << " interior edges moved by elasticity; " << q.Rounds << " rounds\n";
   out << "  scaled Jacobian (min det J / max det J) >= " << FormatFixed(q.CertifiedMinimumScaledJacobian, 3)
       << " certified (bound " << FormatFixed(q.ScaledJacobianBound, 3) << ")";
   if (q.SampledMinimumScaledJacobian)
@@ -106,6 +110,9 @@ void WriteQuadraticJson(const RunReport& report, JsonWriter& j)
   j.Key("pulled_back_edges").Integer(q.PulledBackEdges);
   j.Key("cells_failed_scaled_jacobian").Integer(q.CellsFailedScaledJacobian);
   j.Key("faces_failed_distance").Integer(q.FacesFailedDistance);
+  j.Key("certification_rounds").Integer(q.Rounds);
+  j.Key("untangled_interior_edges").Integer(q.UntangledEdges);
+  j.Key("pinned_interior_edges").Integer(q.PinnedEdges);
   j.Key("scaled_jacobian_bound").Number(q.ScaledJacobianBound);
   j.Key("certified_minimum_scaled_jacobian").Number(q.CertifiedMinimumScaledJacobian);
   optional("sampled_minimum_scaled_jacobian", q.SampledMinimumScaledJacobian);

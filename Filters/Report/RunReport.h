@@ -61,6 +61,7 @@ struct QuadraticEntry
   long long Cells = 0, Points = 0;
   long long FittedEdges = 0, CurvedEdges = 0, PulledBackEdges = 0;
   long long CellsFailedScaledJacobian = 0, FacesFailedDistance = 0;
+  long long Rounds = 0, UntangledEdges = 0, PinnedEdges = 0;
   double ScaledJacobianBound = 0.0, CertifiedMinimumScaledJacobian = 0.0;
   /// Present when measured (independently of the curver's certificates).
   std::optional<double> SampledMinimumScaledJacobian, MeasuredImageToMesh, MeasuredMeshToImage, MeasureResolution;

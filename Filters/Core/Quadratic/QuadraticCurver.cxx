@@ -3,8 +3,10 @@
 #include "Quadratic/QuadraticCurver.h"
 
 #include "Quadratic/InterfaceFaces.h"
+#include "Quadratic/InteriorUntangler.h"
 #include "Quadratic/TetraJacobian.h"
 
+#include <algorithm>
 #include <chrono>
 #include <set>
 #include <stdexcept>
@@ -19,6 +21,9 @@ double SecondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+/// Levels of red refinement the Jacobian bound may use on a cell it cannot certify whole.
+constexpr int kSubdivisionDepth = 2;
 
 /// Offset × 1/2, 1/4, then straight.
 void PullBack(double& scale)
@@ -62,44 +67,101 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
   const auto start = std::chrono::steady_clock::now();
   QuadraticMesh& mesh = result.Mesh;
   const std::vector<MaterialFace> faces = FindInterfaceFaces(mesh);
+  // Edges on an interface or the box are bounding; the others (interior) are free to untangle.
   // Only interface sheets may bend: the box's faces stay flat (what the homeomorphism needs).
   const std::vector<char> curvable = CurvableEdges(mesh, faces, ImageBox(image));
+  std::vector<char> free(mesh.Edges.size(), 1);
+  for (const MaterialFace& f : faces)
+    for (std::int64_t e : f.Edges)
+      free[static_cast<std::size_t>(e)] = 0;
   for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
-    if (mesh.Curved(e) && !curvable[e])
+  {
+    if (!free[e] && mesh.Curved(e) && !curvable[e])
     {
       mesh.Scales[e] = 0.0;
       ++result.StraightenedEdges;
     }
+    if (free[e] && !parameters.Untangle)
+      mesh.Scales[e] = 0.0, free[e] = 0;
+  }
+  // Cells around each vertex, for a failing cell whose own edges are not the curves' to blame.
+  std::vector<std::vector<std::size_t>> cellsAt(mesh.Linear.Points.size());
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+    for (int k = 0; k < 4; ++k)
+      cellsAt[static_cast<std::size_t>(mesh.Linear.Cell(c)[k])].push_back(c);
+  auto curvedInterfaceEdges = [&](std::size_t c, std::set<std::size_t>& out) {
+    for (int e = 0; e < 6; ++e)
+    {
+      const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]);
+      if (!free[id] && mesh.Curved(id))
+        out.insert(id);
+    }
+  };
+
   const QuadraticBounds bounds{ parameters.ImageToMeshDistance, parameters.MeshToImageDistance, parameters.Tolerance };
   std::set<std::size_t> shortened, failedCells, failedFaces;
   result.ScaledJacobian.assign(mesh.NumberOfCells(), 1.0);
+  // A round tests again only the cells and faces whose mid-nodes moved since the last one.
+  std::vector<Point3> before(mesh.Edges.size());
+  std::vector<char> edgeMoved(mesh.Edges.size(), 1), faceMoved(faces.size(), 1);
+  InteriorUntangler untangler(mesh, free);
   for (;;)
   {
     ++result.Rounds;
-    std::set<std::size_t> failing; // edges
+    result.UntangledEdges = parameters.Untangle ? untangler.Solve(mesh) : 0;
+    for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+    {
+      const Point3 now = mesh.MidNode(e);
+      edgeMoved[e] = edgeMoved[e] || now != before[e];
+      before[e] = now;
+    }
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      faceMoved[f] = edgeMoved[static_cast<std::size_t>(faces[f].Edges[0])] ||
+        edgeMoved[static_cast<std::size_t>(faces[f].Edges[1])] || edgeMoved[static_cast<std::size_t>(faces[f].Edges[2])];
+    std::set<std::size_t> failing; // interface edges to pull back
+    bool pinned = false;
     for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
     {
-      if (!mesh.CellIsCurved(c))
-      {
-        result.ScaledJacobian[c] = 1.0;
-        continue;
-      }
-      result.ScaledJacobian[c] = CertifiedScaledJacobian(mesh.Nodes(c));
+      bool moved = false;
+      for (int e = 0; e < 6; ++e)
+        moved = moved || edgeMoved[static_cast<std::size_t>(mesh.CellEdges[c * 6 + e])];
+      if (moved)
+        result.ScaledJacobian[c] = mesh.CellIsCurved(c)
+          ? CertifiedScaledJacobian(mesh.Nodes(c), std::max(parameters.MinimumScaledJacobian, 1e-9), kSubdivisionDepth)
+          : 1.0;
       const double ratio = result.ScaledJacobian[c];
       if (!parameters.CertifyValidity || (ratio > 0.0 && ratio >= parameters.MinimumScaledJacobian))
         continue;
       failedCells.insert(c);
-      for (int e = 0; e < 6; ++e)
-        failing.insert(static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]));
+      std::set<std::size_t> blamed;
+      curvedInterfaceEdges(c, blamed);
+      for (int k = 0; k < 4 && blamed.empty(); ++k)
+        for (std::size_t d : cellsAt[static_cast<std::size_t>(mesh.Linear.Cell(c)[k])])
+          curvedInterfaceEdges(d, blamed);
+      if (blamed.empty())
+      {
+        // Only untangled interior edges bend it: pin them straight.
+        for (int e = 0; e < 6; ++e)
+        {
+          const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]);
+          if (free[id])
+          {
+            free[id] = 0, mesh.Scales[id] = 0.0, ++result.PinnedEdges, pinned = true;
+            untangler.Pin(id);
+          }
+        }
+      }
+      failing.insert(blamed.begin(), blamed.end());
     }
+    std::fill(edgeMoved.begin(), edgeMoved.end(), 0);
     if (parameters.CertifyDistances)
-      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds))
+      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds, &faceMoved))
       {
         failedFaces.insert(f);
         for (std::int64_t e : faces[f].Edges)
           failing.insert(static_cast<std::size_t>(e));
       }
-    bool changed = false;
+    bool changed = pinned;
     for (std::size_t e : failing)
     {
       if (!mesh.Curved(e))
@@ -113,7 +175,7 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
       break;
   }
   for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
-    result.CurvedEdges += mesh.Curved(e) ? 1 : 0;
+    result.CurvedEdges += !free[e] && mesh.Curved(e) ? 1 : 0;
   result.ShortenedEdges = shortened.size();
   result.CellsFailedQuality = failedCells.size();
   result.FacesFailedDistance = failedFaces.size();

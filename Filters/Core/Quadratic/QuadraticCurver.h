@@ -8,16 +8,20 @@
  * to the image: the 3D curvilinear meshing the dissertation leaves as future
  * work (chapter 5: a linear mesh first, then straight-sided to curved).
  *
- * Interior edges, edges on the box and junction curves stay straight; the
- * mid-nodes of the other interface edges are fitted (InterfaceFit.h). Then,
- * until nothing fails, a round certifies
+ * Edges on the box and junction curves stay straight; the mid-nodes of the
+ * other interface edges are fitted (InterfaceFit.h). Then, until nothing
+ * fails, a round moves the interior mid-nodes near the curves to the elastic
+ * equilibrium of the control nets (InteriorUntangler.h) and certifies
  *   - validity and quality: every curved cell's min det J / max det J at least
  *     MinimumScaledJacobian, by the Bernstein coefficients of det J
  *     (TetraJacobian.h; 0 asks for det J > 0 alone);
  *   - both distance bounds on every curved interface face (QuadraticFidelity.h);
- * and the curved edges of each failing cell or face are pulled back towards
- * straight (offset × 1/2, 1/4, then 0). Straight cells are the linear mesh's,
- * which holds every bound, so the loop ends, at the latest with the linear mesh.
+ * and the curved interface edges of each failing face, and of each failing
+ * cell (or, if it has none, of the cells around its corners), are pulled back
+ * towards straight (offset × 1/2, 1/4, then 0); a failing cell with no curved
+ * interface edge around it gets its interior edges pinned straight. Straight
+ * cells are the linear mesh's, which holds every bound, so the loop ends, at
+ * the latest with the linear mesh.
  *
  * Why interfaces cannot cross or touch, and topology is kept: the curved mesh
  * is the image of the linear mesh under a continuous map (neighbours share the
@@ -49,6 +53,7 @@ struct QuadraticParameters
   double MinimumScaledJacobian = 0.1; ///< certified min det J / max det J of every cell, [0, 1)
   double Tolerance = 1.0 / 64.0; ///< flattening tolerance of the distance test, voxels
   InterfaceFitOptions Fit;
+  bool Untangle = true; ///< move interior mid-nodes by elasticity (off: interior edges stay straight)
   /// For tests only: switch a certificate off to show that the checks catch what it prevents.
   bool CertifyValidity = true;
   bool CertifyDistances = true;
@@ -62,6 +67,8 @@ struct QuadraticResult
   std::size_t CurvedEdges = 0;      ///< still curved at the end
   std::size_t ShortenedEdges = 0;   ///< pulled back at least once
   std::size_t StraightenedEdges = 0; ///< pulled back to straight
+  std::size_t UntangledEdges = 0;   ///< interior edges moved by the last untangling
+  std::size_t PinnedEdges = 0;      ///< interior edges pinned straight
   std::size_t Rounds = 0;
   std::size_t CellsFailedQuality = 0;  ///< cells that failed the Jacobian bound in some round
   std::size_t FacesFailedDistance = 0; ///< faces that failed a distance bound in some round

@@ -5,6 +5,7 @@
 #include "Criteria/DistanceBound.h"
 #include "Support/BoxBins.h"
 #include "Support/Geometry.h"
+#include "Support/ParallelChunks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,9 @@ Point3 EvaluateFace(const std::array<Point3, 6>& n, double l0, double l1, double
   }
   return x;
 }
+
+Point3 Min(const Point3& a, const Point3& b) { return { std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2]) }; }
+Point3 Max(const Point3& a, const Point3& b) { return { std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2]) }; }
 
 /// The face's Bézier control points: it lies in their convex hull.
 std::array<Point3, 6> ControlPoints(const std::array<Point3, 6>& n)
@@ -155,8 +159,9 @@ std::vector<std::array<Point3, 3>> FlattenFace(const std::array<Point3, 6>& node
 }
 
 std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
-  const LabelImage& image, const QuadraticBounds& bounds)
+  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed)
 {
+  auto retest = [&](std::size_t f) { return !changed || (*changed)[f]; };
   const double T = bounds.Tolerance;
   std::vector<char> failing(faces.size(), 0);
   std::vector<std::vector<ConvexPiece>> flattened(faces.size());
@@ -181,9 +186,12 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
 
   // Mesh to image: each sub-triangle near the image boundary of each non-zero material beside it.
   const double meshReach = bounds.MeshToImage - T;
-  for (std::size_t f : curved)
+  // Faces are independent here (each writes its own flag): both cores take them.
+  ParallelChunks(curved.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
+  for (std::size_t index = begin; index < end; ++index)
   {
-    if (failing[f])
+    const std::size_t f = curved[index];
+    if (failing[f] || !retest(f))
       continue;
     for (std::int32_t m : { faces[f].Below, faces[f].Above })
     {
@@ -192,14 +200,29 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       std::vector<ConvexPiece> targets;
       ForEachBoundaryFace(image, VoxelsNear(hull[f], meshReach + 1.0, image), m,
         [&](int i, int j, int k, int axis) { targets.push_back(VoxelFace(i, j, k, axis)); });
+      std::vector<ConvexPiece> near;
       for (const ConvexPiece& t : flattened[f])
-        if (!WithinDistance(t, targets, meshReach))
+      {
+        // Only voxel faces within reach of the sub-triangle (its points are within `radius` of
+        // its centroid) can certify it: the exact test gets those.
+        const Point3 centroid = Scale(Add(Add(t.Points[0], t.Points[1]), t.Points[2]), 1.0 / 3.0);
+        double radius = 0.0;
+        for (int q = 0; q < 3; ++q)
+          radius = std::max(radius, Distance(centroid, t.Points[q]));
+        const double reach = (meshReach + radius) * (meshReach + radius);
+        near.clear();
+        for (const ConvexPiece& v : targets)
+          if (SquaredDistanceToBox(centroid, Min(v.Points[0], v.Points[2]), Max(v.Points[0], v.Points[2])) <= reach)
+            near.push_back(v);
+        if (!WithinDistance(t, near, meshReach))
         {
           failing[f] = 1;
           break;
         }
+      }
     }
   }
+  });
 
   // Image to mesh: voxel faces of m near a curved face of m, against m's faces within reach.
   const double h = bounds.ImageToMesh;
@@ -230,9 +253,10 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
   {
     std::unordered_set<long long> tested;
     const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
-    for (std::size_t f : curved)
+    // Voxel faces near a changed face (curved, or straight again: its curve may have covered them).
+    for (std::size_t f = 0; f < faces.size(); ++f)
     {
-      if (!bounds_(faces[f], m))
+      if (!bounds_(faces[f], m) || !(changed ? (*changed)[f] : FaceIsCurved(mesh, faces[f])))
         continue;
       ForEachBoundaryFace(image, VoxelsNear(hull[f], h + 1.0, image), m, [&](int i, int j, int k, int axis) {
         const long long key = (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis;
@@ -241,20 +265,29 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
         const ConvexPiece voxel = VoxelFace(i, j, k, axis);
         const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
         std::vector<ConvexPiece> straight, all;
-        std::vector<std::size_t> near;
+        std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
+        // Only pieces within h of some point of the voxel face can certify it (its points are
+        // within sqrt(1/2) of its centre): the others are left out of the exact test.
+        const double reach = (h + 0.7072) * (h + 0.7072);
+        auto inReach = [&](const ConvexPiece& t) {
+          return SquaredDistanceToTriangle(centre, t.Points[0], t.Points[1], t.Points[2]) <= reach;
+        };
         for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
         {
           if (!bounds_(faces[g], m))
             continue;
           if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
           {
-            straight.push_back(Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] }));
-            all.push_back(straight.back());
+            const ConvexPiece t = Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] });
+            if (inReach(t))
+              straight.push_back(t), all.push_back(t);
           }
           else
           {
             near.push_back(g);
-            all.insert(all.end(), flattened[g].begin(), flattened[g].end());
+            for (const ConvexPiece& t : flattened[g])
+              if (inReach(t))
+                all.push_back(t);
           }
         }
         if (near.empty())

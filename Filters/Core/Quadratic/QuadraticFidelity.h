@@ -40,9 +40,12 @@ struct QuadraticBounds
 };
 
 /// The faces whose curves break a bound (or cannot be flattened to the
-/// tolerance within 4^5 sub-triangles): indices into `faces`.
+/// tolerance within 4^5 sub-triangles): indices into `faces`. With `changed`
+/// (per face), only what changed faces can affect is tested again: the
+/// changed faces themselves and the voxel faces within reach of them; the
+/// rest passed an earlier call on the same curves.
 std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
-  const LabelImage& image, const QuadraticBounds& bounds);
+  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed = nullptr);
 
 /// The face's six nodes: corners a, b, c, then the mid-nodes of the edges
 /// opposite a, b and c.

@@ -14,7 +14,11 @@
  *   - all coefficients positive proves det J > 0 in the whole closed cell;
  *   - min coefficient / max coefficient is a lower bound of the cell's scaled
  *     Jacobian min det J / max det J (1 for a straight cell).
- * The bound is conservative (no subdivision): a cell it cannot certify is
+ * Where the coefficients are not conclusive, the cell is subdivided (red
+ * refinement of its reference tetrahedron, the map restricted to each piece
+ * being again a quadratic tetrahedron, whose det J is the cell's times the
+ * piece's share of the volume): the bounds tighten towards the true extremes.
+ * Still conservative: a cell the bound cannot certify within the depth is
  * treated as failing, and its curves are pulled back towards straight.
  */
 
@@ -30,10 +34,12 @@ namespace labelmesher
 /// straight cell every coefficient is six times its volume.
 std::array<double, 20> JacobianCoefficients(const std::array<Point3, 10>& nodes);
 
-/// min / max of the coefficients when the smallest is positive; otherwise
-/// that smallest coefficient divided by the largest absolute one (≤ 0: the
-/// cell is not proved valid).
-double CertifiedScaledJacobian(const std::array<Point3, 10>& nodes);
+/// A lower bound of min det J / max det J: the smallest coefficient over the
+/// largest (over the pieces), when the smallest is positive; otherwise that
+/// smallest divided by the largest absolute one (≤ 0: not proved valid).
+/// Pieces holding the bound below `target` are refined, up to `depth` levels
+/// (8^depth pieces at most); 0 does not subdivide.
+double CertifiedScaledJacobian(const std::array<Point3, 10>& nodes, double target = 1.0, int depth = 0);
 
 } // namespace labelmesher
 

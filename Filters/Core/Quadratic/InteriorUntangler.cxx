@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Interior mid-nodes at the elastic equilibrium of the control nets.
+#include "Quadratic/InteriorUntangler.h"
+
+#include "Support/Geometry.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <array>
+#include <cmath>
+
+namespace labelmesher
+{
+using namespace geometry;
+namespace
+{
+
+/// A control point of a cell: corner k (0..3) or edge e (4 + e), and the eight tetrahedra of the
+/// degree-2 control net: four at the corners, four around the octahedron's diagonal 0-2 / 1-3
+/// (edges 2 and 4 in kTetraEdges' order).
+constexpr int kNetTetra[8][4] = {
+  { 0, 4, 6, 7 }, { 1, 4, 5, 8 }, { 2, 5, 6, 9 }, { 3, 7, 8, 9 }, // corners with their three edges
+  { 6, 8, 4, 5 }, { 6, 8, 5, 9 }, { 6, 8, 9, 7 }, { 6, 8, 7, 4 }, // 2-0 / 1-3 and the equator 0-1, 1-2, 2-3, 0-3
+};
+
+/// The 12 x 12 stiffness of a linear tetrahedron with points x (isotropic, Young's modulus 1),
+/// divided by its volume. False when it is degenerate.
+bool Stiffness(const Point3 x[4], double nu, Eigen::Matrix<double, 12, 12>& k)
+{
+  Eigen::Matrix4d m;
+  for (int i = 0; i < 4; ++i)
+    m.row(i) << 1.0, x[i][0], x[i][1], x[i][2];
+  const double det = m.determinant();
+  if (std::fabs(det) < 1e-12)
+    return false;
+  const Eigen::Matrix4d inverse = m.inverse(); // column i: the coefficients of shape function i
+  Eigen::Matrix<double, 6, 12> b = Eigen::Matrix<double, 6, 12>::Zero();
+  for (int i = 0; i < 4; ++i)
+  {
+    const double dx = inverse(1, i), dy = inverse(2, i), dz = inverse(3, i);
+    b(0, 3 * i) = dx;
+    b(1, 3 * i + 1) = dy;
+    b(2, 3 * i + 2) = dz;
+    b(3, 3 * i) = dy, b(3, 3 * i + 1) = dx;
+    b(4, 3 * i + 1) = dz, b(4, 3 * i + 2) = dy;
+    b(5, 3 * i) = dz, b(5, 3 * i + 2) = dx;
+  }
+  const double lambda = nu / ((1 + nu) * (1 - 2 * nu)), mu = 1.0 / (2 * (1 + nu));
+  Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+  d.topLeftCorner<3, 3>().setConstant(lambda);
+  for (int i = 0; i < 3; ++i)
+    d(i, i) += 2 * mu, d(3 + i, 3 + i) = mu;
+  k = b.transpose() * d * b; // volume × BᵀDB, stiffened by 1 / volume
+  return true;
+}
+
+} // namespace
+
+/// The factorised system: K_ff u_f = -K_fp u_p over the moving edges' control points (3 dofs
+/// each), K_fp over the bounding edges' ones.
+struct InteriorUntangler::System
+{
+  std::vector<int> Unknown;                 ///< per edge: its index among the moving ones, or -1
+  std::vector<int> Prescribed;              ///< per edge: its index among the bounding ones next to them, or -1
+  Eigen::SparseMatrix<double> Coupling;     ///< K_fp
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> Solver;
+  bool Ok = false;
+};
+
+InteriorUntangler::InteriorUntangler(const QuadraticMesh& mesh, const std::vector<char>& free, double poissonRatio)
+  : Mesh(mesh)
+  , Free(free)
+  , PoissonRatio(poissonRatio)
+  , Moving(mesh.Edges.size(), 0)
+{
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    bool curved = false;
+    for (int e = 0; e < 6; ++e)
+    {
+      const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]);
+      curved = curved || (!free[id] && mesh.Curved(id));
+    }
+    if (curved)
+      for (int e = 0; e < 6; ++e)
+      {
+        const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]);
+        Moving[id] = free[id];
+      }
+  }
+}
+
+InteriorUntangler::~InteriorUntangler() = default;
+
+void InteriorUntangler::Pin(std::size_t e)
+{
+  Free[e] = 0;
+  if (Moving[e])
+  {
+    Moving[e] = 0;
+    Factored.reset();
+  }
+}
+
+std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
+{
+  const std::size_t edges = mesh.Edges.size();
+  for (std::size_t e = 0; e < edges; ++e)
+    if (Free[e])
+      mesh.Scales[e] = 0.0;
+  if (!Factored)
+  {
+    Factored = std::make_unique<System>();
+    System& s = *Factored;
+    s.Unknown.assign(edges, -1);
+    s.Prescribed.assign(edges, -1);
+    int unknowns = 0, prescribed = 0;
+    for (std::size_t e = 0; e < edges; ++e)
+      if (Moving[e])
+        s.Unknown[e] = unknowns++;
+    std::vector<Eigen::Triplet<double>> kff, kfp;
+    for (std::size_t c = 0; c < Mesh.NumberOfCells(); ++c)
+    {
+      std::int64_t node[10]; // -1 for corners (fixed), else the edge
+      bool touches = false;
+      for (int k = 0; k < 4; ++k)
+        node[k] = -1;
+      for (int e = 0; e < 6; ++e)
+      {
+        node[4 + e] = Mesh.CellEdges[c * 6 + e];
+        touches = touches || s.Unknown[static_cast<std::size_t>(node[4 + e])] >= 0;
+      }
+      if (!touches)
+        continue;
+      // The straight net: corners and edge midpoints.
+      Point3 net[10];
+      const std::int64_t* v = Mesh.Linear.Cell(c);
+      for (int k = 0; k < 4; ++k)
+        net[k] = Mesh.Linear.Points[static_cast<std::size_t>(v[k])];
+      for (int e = 0; e < 6; ++e)
+        net[4 + e] = Scale(Add(net[kTetraEdges[e][0]], net[kTetraEdges[e][1]]), 0.5);
+      for (const auto& t : kNetTetra)
+      {
+        const Point3 x[4] = { net[t[0]], net[t[1]], net[t[2]], net[t[3]] };
+        Eigen::Matrix<double, 12, 12> k;
+        if (!Stiffness(x, PoissonRatio, k))
+          continue;
+        for (int a = 0; a < 4; ++a)
+        {
+          const int ua = node[t[a]] < 0 ? -1 : s.Unknown[static_cast<std::size_t>(node[t[a]])];
+          if (ua < 0)
+            continue;
+          for (int b = 0; b < 4; ++b)
+          {
+            const std::int64_t eb = node[t[b]];
+            if (eb < 0)
+              continue; // a corner: fixed, no displacement
+            const auto edge = static_cast<std::size_t>(eb);
+            const int ub = s.Unknown[edge];
+            if (ub < 0 && Free[edge])
+              continue; // a free edge that does not move: straight
+            if (ub < 0 && s.Prescribed[edge] < 0)
+              s.Prescribed[edge] = prescribed++;
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j)
+              {
+                const double kij = k(3 * a + i, 3 * b + j);
+                if (ub >= 0)
+                  kff.emplace_back(3 * ua + i, 3 * ub + j, kij);
+                else
+                  kfp.emplace_back(3 * ua + i, 3 * s.Prescribed[edge] + j, kij);
+              }
+          }
+        }
+      }
+    }
+    Eigen::SparseMatrix<double> matrix(3 * unknowns, 3 * unknowns);
+    matrix.setFromTriplets(kff.begin(), kff.end());
+    s.Coupling.resize(3 * unknowns, 3 * prescribed);
+    s.Coupling.setFromTriplets(kfp.begin(), kfp.end());
+    if (unknowns > 0)
+    {
+      s.Solver.compute(matrix);
+      s.Ok = s.Solver.info() == Eigen::Success;
+    }
+  }
+  System& s = *Factored;
+  if (!s.Ok)
+    return 0;
+  // The prescribed control points' displacements from the straight net: 2 × (mid-node − midpoint).
+  Eigen::VectorXd up = Eigen::VectorXd::Zero(s.Coupling.cols());
+  for (std::size_t e = 0; e < edges; ++e)
+    if (s.Prescribed[e] >= 0 && mesh.Curved(e))
+      for (int j = 0; j < 3; ++j)
+        up[3 * s.Prescribed[e] + j] = 2.0 * mesh.Scales[e] * mesh.Offset[e][j];
+  const Eigen::VectorXd u = s.Solver.solve(-(s.Coupling * up));
+  std::size_t moved = 0;
+  for (std::size_t e = 0; e < edges; ++e)
+  {
+    const int k = s.Unknown[e];
+    if (k < 0)
+      continue;
+    const Point3 d{ u[3 * k], u[3 * k + 1], u[3 * k + 2] };
+    if (!std::isfinite(d[0] + d[1] + d[2]) || Norm(d) < 1e-9)
+      continue;
+    mesh.Offset[e] = Scale(d, 0.5); // the mid-node moves half its control point's displacement
+    mesh.Scales[e] = 1.0;
+    ++moved;
+  }
+  return moved;
+}
+
+} // namespace labelmesher

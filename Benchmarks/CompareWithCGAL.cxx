@@ -21,10 +21,16 @@
 //     --min-angle DEG     our decimation angle in degrees         (15)
 //     --no-decimate       ours: the initial mesh only (MeshLabelImage)
 //     --block-cells N     ours: initial cells per block (1000000; 0: one block)
+//     --order 2           ours: also the quadratic mesh (Quadratic/QuadraticCurver.h), its
+//                         time and its misclassified voxels (cells refined at step 1/4)
 //     --name NAME         label for the SUMMARY line
-// The last line is machine-readable:
+// Misclassified voxels (centre in a cell of another material, or in none with a non-zero label:
+// Checks/QuadraticVolume.h) are counted by the same check for both. The last lines are
+// machine-readable:
 //   SUMMARY name t_ours t_cgal cells_ours cells_cgal mindih_ours mindih_cgal
 //           hIM_ours hIM_cgal hMI_ours hMI_cgal topo_ours topo_cgal peakMiB_ours peakMiB_cgal
+//   ACCURACY name voxels misclassified_ours misclassified_cgal misclassified_quadratic t_quadratic
+//           (the last two -1 without --order 2)
 #include "MPIStartup.h"
 #include "Octree/OctreeRefinement.h"
 #include "BenchmarkSupport.h"
@@ -33,6 +39,8 @@
 #include "LabelOctreeMesher.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Checks/MeshChecks.h"
+#include "Checks/QuadraticVolume.h"
+#include "Quadratic/QuadraticCurver.h"
 #include "SyntheticShapes.h"
 #include "LabelImageFile.h"
 
@@ -57,6 +65,7 @@ struct Measured
 {
   double Seconds = 0.0;
   double PeakMiB = 0.0; ///< resident memory at the peak, less what the process held before
+  std::size_t Misclassified = 0; ///< voxels (MeasureVoxelAccuracy)
   std::vector<std::pair<std::string, double>> Timings;
   std::size_t Cells = 0;    ///< foreground cells (label != 0)
   std::size_t Vertices = 0; ///< vertices used by foreground cells
@@ -110,6 +119,7 @@ void Measure(const LabelImage& image, const SimplexMesh& mesh, Measured& out)
     out.QualityPerLabel[l] = MeasureQuality(part);
   }
   out.Distances = MeasureHausdorff(image, mesh);
+  out.Misclassified = MeasureVoxelAccuracy(image, mesh).Misclassified;
   out.Topology = CompareTopology(image, mesh);
   for (const auto& [label, t] : out.Topology)
     out.TopologyMatches += t.Matches();
@@ -151,6 +161,7 @@ int main(int argc, char** argv)
   benchmarks::CGALMeshOptions cgal;
   double h = 2.0, minimumAngle = 15.0;
   bool decimate = true;
+  int order = 1;
   StreamingParameters streaming;
   int cassini = 0;
   std::string file, name;
@@ -184,6 +195,8 @@ int main(int argc, char** argv)
       minimumAngle = value();
     else if (arg == "--no-decimate")
       decimate = false;
+    else if (arg == "--order")
+      order = static_cast<int>(value());
     else if (arg == "--block-cells")
       streaming.BlockCells = static_cast<std::size_t>(value());
     else if (arg == "--cassini")
@@ -244,6 +257,8 @@ int main(int argc, char** argv)
   std::fflush(stdout);
 
   Measured ours, theirs;
+  double quadraticSeconds = -1.0;
+  long long quadraticMisclassified = -1;
   try
   {
     MesherParameters parameters;
@@ -276,6 +291,16 @@ int main(int argc, char** argv)
     ours.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ours.PeakMiB = benchmarks::PeakRssMiB() - before;
     Measure(image, mesh, ours);
+    if (order == 2)
+    {
+      QuadraticParameters quadratic;
+      quadratic.ImageToMeshDistance = quadratic.MeshToImageDistance = h;
+      const auto curveStart = std::chrono::steady_clock::now();
+      const QuadraticResult curved = CurveQuadratic(mesh, image, quadratic);
+      quadraticSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - curveStart).count();
+      quadraticMisclassified =
+        static_cast<long long>(MeasureVoxelAccuracy(image, RefineQuadraticMesh(curved.Mesh, 4)).Misclassified);
+    }
   }
   catch (const std::exception& e)
   {
@@ -321,6 +346,14 @@ int main(int argc, char** argv)
   Row("h(M,I) [voxels]", Fixed(ours.Distances.Overall.MeshToImage), Fixed(theirs.Distances.Overall.MeshToImage),
     Ratio(ours.Distances.Overall.MeshToImage, theirs.Distances.Overall.MeshToImage));
   Row("peak memory [MiB]", Fixed(ours.PeakMiB, 1), Fixed(theirs.PeakMiB, 1), Ratio(ours.PeakMiB, theirs.PeakMiB));
+  Row("misclassified voxels", std::to_string(ours.Misclassified), std::to_string(theirs.Misclassified),
+    Ratio(double(ours.Misclassified), double(theirs.Misclassified)));
+  if (order == 2)
+  {
+    Row("  quadratic (ours)", std::to_string(quadraticMisclassified), std::to_string(theirs.Misclassified),
+      Ratio(double(quadraticMisclassified), double(theirs.Misclassified)));
+    Row("  quadratic time [s]", Fixed(quadraticSeconds), "", "");
+  }
   Row("labels with image topology", std::to_string(ours.TopologyMatches) + "/" + std::to_string(ours.Topology.size()),
     std::to_string(theirs.TopologyMatches) + "/" + std::to_string(theirs.Topology.size()), "");
 
@@ -365,5 +398,7 @@ int main(int argc, char** argv)
     ours.Distances.Overall.ImageToMesh, theirs.Distances.Overall.ImageToMesh, ours.Distances.Overall.MeshToImage,
     theirs.Distances.Overall.MeshToImage, ours.TopologyMatches, ours.Topology.size(), theirs.TopologyMatches,
     theirs.Topology.size(), ours.PeakMiB, theirs.PeakMiB);
+  std::printf("ACCURACY %s %zu %zu %zu %lld %.6g\n", name.c_str(), image.NumberOfVoxels(), ours.Misclassified,
+    theirs.Misclassified, quadraticMisclassified, quadraticSeconds);
   return 0;
 }

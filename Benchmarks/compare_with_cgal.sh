@@ -64,3 +64,13 @@ cat "$logs"/*.log | awk '
   $1 == "SUMMARY" {
     printf "%-22s %9s %9s %9s %9s %9s %9s   %-11s %-11s\n", $2, r($3, $4), r($5, $6), r($7, $8), r($9, $10), r($11, $12), r($15, $16), $13, $14
   }'
+echo
+echo "=== misclassified voxels (same check for both; quadratic: with -- --order 2) ==="
+cat "$logs"/*.log | awk '
+  function r(a, b) { return (b == 0) ? ((a == 0) ? "1" : "inf") : sprintf("%.3f", a / b) }
+  BEGIN { printf "%-22s %12s %12s %12s %9s %12s %9s\n", "input", "voxels", "ours", "CGAL", "ours/CGAL", "quadratic", "quad/CGAL" }
+  $1 == "ACCURACY" {
+    q = ($6 < 0) ? "-" : $6
+    qr = ($6 < 0) ? "-" : r($6, $5)
+    printf "%-22s %12s %12s %12s %9s %12s %9s\n", $2, $3, $4, $5, r($4, $5), q, qr
+  }'

@@ -16,15 +16,18 @@ using namespace geometry;
 namespace
 {
 
+/// VTK_QUADRATIC_TETRA's edges, in its node order (kept here, not taken from the curver's
+/// headers: the checks share no code with what they check).
+constexpr int kEdge[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
+
 /// Lagrange quadratic tetrahedron at barycentric l, nodes in VTK's order.
 Point3 Map(const std::array<Point3, 10>& x, const double l[4])
 {
-  static const int edge[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
   Point3 p{ 0.0, 0.0, 0.0 };
   for (int k = 0; k < 4; ++k)
     p = Add(p, Scale(x[k], l[k] * (2.0 * l[k] - 1.0)));
   for (int e = 0; e < 6; ++e)
-    p = Add(p, Scale(x[4 + e], 4.0 * l[edge[e][0]] * l[edge[e][1]]));
+    p = Add(p, Scale(x[4 + e], 4.0 * l[kEdge[e][0]] * l[kEdge[e][1]]));
   return p;
 }
 
@@ -37,7 +40,6 @@ double Volume6(const Point3& a, const Point3& b, const Point3& c, const Point3& 
 
 double SampledScaledJacobian(const std::array<Point3, 10>& x, int n, double& smallest)
 {
-  static const int edge[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j)
@@ -50,7 +52,7 @@ double SampledScaledJacobian(const std::array<Point3, 10>& x, int n, double& sma
           dl[c] = Scale(x[c], 4.0 * l[c] - 1.0);
         for (int e = 0; e < 6; ++e)
         {
-          const int a = edge[e][0], b = edge[e][1];
+          const int a = kEdge[e][0], b = kEdge[e][1];
           dl[a] = Add(dl[a], Scale(x[4 + e], 4.0 * l[b]));
           dl[b] = Add(dl[b], Scale(x[4 + e], 4.0 * l[a]));
         }

@@ -41,7 +41,8 @@ double RefinementTolerance(const QuadraticMesh& mesh, int n);
 
 /// min det J / max det J of a quadratic tetrahedron (VTK's node order) over the
 /// barycentric lattice of step 1/n (the corners included): at least the true
-/// ratio; the smallest sampled det J is in `smallest` (> 0 where valid).
+/// ratio when the sampled minimum is positive; the smallest sampled det J is in
+/// `smallest` (> 0 where valid).
 double SampledScaledJacobian(const std::array<Point3, 10>& nodes, int n, double& smallest);
 
 struct VoxelAccuracy

@@ -26,7 +26,7 @@ struct MaterialFace
   bool OnBox = false;                 ///< one cell (Below is its material, Above meaningless)
 };
 
-/// Every face bounding a material, in a fixed order (by cell, then local face).
+/// Every face bounding a material, in a fixed order (by their sorted corner ids).
 std::vector<MaterialFace> FindInterfaceFaces(const QuadraticMesh& mesh);
 
 /// Per edge: true when the edge may be curved: it lies on exactly two

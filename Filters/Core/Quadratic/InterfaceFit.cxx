@@ -52,15 +52,11 @@ std::size_t FitInterfaceMidNodes(QuadraticMesh& mesh, const std::vector<Material
     if (faces[f].OnBox)
       continue;
     normals[f] = FaceNormal(mesh, faces[f]);
-    bool curved = false;
     for (std::int64_t e : faces[f].Edges)
       if (curvable[static_cast<std::size_t>(e)])
-      {
         direction[static_cast<std::size_t>(e)] = Add(direction[static_cast<std::size_t>(e)], normals[f]);
-        curved = true;
-      }
-    if (!curved)
-      continue;
+    // Every interface face is binned: a sample nearest to a straight one is not fitted at all
+    // (rather than to a farther curved face).
     std::array<double, 3> lo, hi;
     for (int a = 0; a < 3; ++a)
     {

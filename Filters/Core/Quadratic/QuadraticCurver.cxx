@@ -84,11 +84,6 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
     if (free[e] && !parameters.Untangle)
       mesh.Scales[e] = 0.0, free[e] = 0;
   }
-  // Cells around each vertex, for a failing cell whose own edges are not the curves' to blame.
-  std::vector<std::vector<std::size_t>> cellsAt(mesh.Linear.Points.size());
-  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
-    for (int k = 0; k < 4; ++k)
-      cellsAt[static_cast<std::size_t>(mesh.Linear.Cell(c)[k])].push_back(c);
   auto curvedInterfaceEdges = [&](std::size_t c, std::set<std::size_t>& out) {
     for (int e = 0; e < 6; ++e)
     {
@@ -135,12 +130,9 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
       failedCells.insert(c);
       std::set<std::size_t> blamed;
       curvedInterfaceEdges(c, blamed);
-      for (int k = 0; k < 4 && blamed.empty(); ++k)
-        for (std::size_t d : cellsAt[static_cast<std::size_t>(mesh.Linear.Cell(c)[k])])
-          curvedInterfaceEdges(d, blamed);
       if (blamed.empty())
       {
-        // Only untangled interior edges bend it: pin them straight.
+        // Only untangled interior edges bend it: pin them straight (the cell is then straight).
         for (int e = 0; e < 6; ++e)
         {
           const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + e]);

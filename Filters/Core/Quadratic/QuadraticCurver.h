@@ -16,10 +16,9 @@
  *     MinimumScaledJacobian, by the Bernstein coefficients of det J
  *     (TetraJacobian.h; 0 asks for det J > 0 alone);
  *   - both distance bounds on every curved interface face (QuadraticFidelity.h);
- * and the curved interface edges of each failing face, and of each failing
- * cell (or, if it has none, of the cells around its corners), are pulled back
- * towards straight (offset × 1/2, 1/4, then 0); a failing cell with no curved
- * interface edge around it gets its interior edges pinned straight. Straight
+ * and the curved interface edges of each failing face and cell are pulled
+ * back towards straight (offset × 1/2, 1/4, then 0); a failing cell with no
+ * curved interface edge of its own gets its interior edges pinned straight. Straight
  * cells are the linear mesh's, which holds every bound, so the loop ends, at
  * the latest with the linear mesh.
  *
@@ -77,14 +76,17 @@ struct QuadraticResult
 
 /// `linear`: the whole decimated mesh (every cell of the box, background
 /// included), index space, positively oriented tetrahedra; `image` the label
-/// image it was made from. FitQuadraticMesh then CertifyQuadraticMesh.
+/// image it was made from; its bounds at least as tight as the parameters'
+/// (straight faces are not tested again). FitQuadraticMesh then
+/// CertifyQuadraticMesh.
 QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
 
 /// The first stage: edges numbered, interface mid-nodes fitted (uncertified).
 QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
 
 /// The second: certifies every cell and face and pulls back what fails, until
-/// all hold, whatever the offsets (a fit's, or any other).
+/// all hold, whatever the offsets (a fit's, or any other, with Scales in
+/// [0, 1]).
 void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters);
 
 } // namespace labelmesher

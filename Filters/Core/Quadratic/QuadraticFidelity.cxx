@@ -53,6 +53,23 @@ std::array<Point3, 6> ControlPoints(const std::array<Point3, 6>& n)
   return c;
 }
 
+/// The control points the face has with every edge at its full fitted offset: a pulled-back
+/// curve's control points lie between those and the straight ones, so this hull holds every
+/// shape the face had or will have (curves only shrink).
+std::array<Point3, 6> FullScaleControlPoints(const QuadraticMesh& mesh, const MaterialFace& face)
+{
+  std::array<Point3, 6> c;
+  for (int k = 0; k < 3; ++k)
+  {
+    c[k] = mesh.Linear.Points[static_cast<std::size_t>(face.Points[k])];
+    const auto edge = static_cast<std::size_t>(face.Edges[k]);
+    const Point3& a = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[edge][0])];
+    const Point3& b = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[edge][1])];
+    c[3 + k] = Add(Scale(Add(a, b), 0.5), Scale(mesh.Offset[edge], 2.0)); // 2 m − (a + b)/2 at scale 1
+  }
+  return c;
+}
+
 bool FaceIsCurved(const QuadraticMesh& mesh, const MaterialFace& face)
 {
   for (std::int64_t e : face.Edges)
@@ -253,12 +270,14 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
   {
     std::unordered_set<long long> tested;
     const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
-    // Voxel faces near a changed face (curved, or straight again: its curve may have covered them).
+    // Voxel faces near a changed face (curved, or straight again: its curve may have covered them,
+    // hence near any shape it has had: its full-scale hull).
     for (std::size_t f = 0; f < faces.size(); ++f)
     {
       if (!bounds_(faces[f], m) || !(changed ? (*changed)[f] : FaceIsCurved(mesh, faces[f])))
         continue;
-      ForEachBoundaryFace(image, VoxelsNear(hull[f], h + 1.0, image), m, [&](int i, int j, int k, int axis) {
+      ForEachBoundaryFace(image, VoxelsNear(FullScaleControlPoints(mesh, faces[f]), h + 1.0, image), m,
+        [&](int i, int j, int k, int axis) {
         const long long key = (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis;
         if (!tested.insert(key).second)
           return;

@@ -40,10 +40,14 @@ struct QuadraticBounds
 };
 
 /// The faces whose curves break a bound (or cannot be flattened to the
-/// tolerance within 4^5 sub-triangles): indices into `faces`. With `changed`
+/// tolerance within 4^5 sub-triangles): indices into `faces`. Precondition:
+/// the straight faces keep the same bounds (the linear mesh was certified for
+/// them: the decimator's h(I, M) and h(M, I), at most these). With `changed`
 /// (per face), only what changed faces can affect is tested again: the
 /// changed faces themselves and the voxel faces within reach of them; the
-/// rest passed an earlier call on the same curves.
+/// rest passed an earlier call on the same curves. Curves may only have been
+/// pulled back (Scales lowered) since: the voxel faces near any shape a face
+/// has had are those near its full-scale hull.
 std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
   const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed = nullptr);
 

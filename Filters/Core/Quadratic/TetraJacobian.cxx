@@ -141,8 +141,13 @@ void Refine(const Piece& parent, std::vector<Piece>& out)
 
 double Ratio(double lo, double hi)
 {
-  if (lo > 0.0)
+  // A positive smallest coefficient proves validity only beyond the coefficients' round-off
+  // (relative to the largest: they are sums of products of the nodes).
+  constexpr double kRoundOff = 1e-12;
+  if (lo > kRoundOff * hi)
     return lo / hi;
+  if (lo > 0.0)
+    return 0.0; // positive, but not beyond round-off: not proved
   const double largest = std::max(std::fabs(lo), std::fabs(hi));
   return largest > 0.0 ? lo / largest : -1.0;
 }

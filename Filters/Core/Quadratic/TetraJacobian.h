@@ -35,8 +35,9 @@ namespace labelmesher
 std::array<double, 20> JacobianCoefficients(const std::array<Point3, 10>& nodes);
 
 /// A lower bound of min det J / max det J: the smallest coefficient over the
-/// largest (over the pieces), when the smallest is positive; otherwise that
-/// smallest divided by the largest absolute one (≤ 0: not proved valid).
+/// largest (over the pieces), when the smallest is positive beyond round-off
+/// (1e-12 of the largest); 0 when it is positive but not beyond; otherwise
+/// that smallest divided by the largest absolute one (≤ 0: not proved valid).
 /// Pieces holding the bound below `target` are refined, up to `depth` levels
 /// (8^depth pieces at most); 0 does not subdivide.
 double CertifiedScaledJacobian(const std::array<Point3, 10>& nodes, double target = 1.0, int depth = 0);

@@ -116,4 +116,21 @@ if dimension == 2:
     initial_only.UpdatePipeline()
     assert servermanager.Fetch(initial_only).GetNumberOfCells() == initial.GetNumberOfCells(), \
         "Decimate off is not the mesher's mesh"
+else:
+    # A 3D image: the quadratic tetrahedra of Order 2 on port 2, certified and measured.
+    quadratic = LabelMesher(Input=image)
+    quadratic.Order = 2
+    quadratic.UpdatePipeline()
+    tetra10 = servermanager.Fetch(quadratic, idx=2)
+    assert tetra10.GetNumberOfCells() == servermanager.Fetch(quadratic, idx=0).GetNumberOfCells(), \
+        "port 2 does not hold the decimated mesh's cells"
+    assert tetra10.GetCellType(0) == 24, "port 2 holds no quadratic tetrahedra"  # VTK_QUADRATIC_TETRA
+    bound = field(tetra10, "MinimumScaledJacobianBound")[0]
+    assert field(tetra10, "CertifiedMinimumScaledJacobian")[0] >= bound, "a cell below the scaled Jacobian bound"
+    assert field(tetra10, "SampledMinimumScaledJacobian")[0] >= bound, "sampled scaled Jacobian below the bound"
+    slack = field(tetra10, "CurvedMeasureResolution")[0] + 1e-9
+    assert field(tetra10, "MeasuredImageToMeshDistance")[0] <= field(tetra10, "ImageToMeshDistance")[0] + slack
+    assert field(tetra10, "MeasuredMeshToImageDistance")[0] <= field(tetra10, "MeshToImageDistance")[0] + slack
+    assert field(tetra10, "MisclassifiedVoxelsQuadratic")[0] < field(tetra10, "MisclassifiedVoxelsLinear")[0]
+    print(f"Label Mesher, Order 2: {tetra10.GetNumberOfCells()} quadratic tetrahedra, scaled Jacobian >= {bound}")
 print("OK")

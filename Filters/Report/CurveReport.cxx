@@ -115,10 +115,7 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
     r.MinimumJacobian = std::min(r.MinimumJacobian, minimum->GetComponent(c, 0));
     // A cell proven valid by its control net may have a non-positive subdivided
     // bound; the histogram's first bin is for cells not proven valid.
-    const int bin = valid->GetComponent(c, 0) == 0.0
-      ? 0
-      : std::clamp(static_cast<int>(std::ceil(std::max(s, 1e-12) * 10.0)), 1, 10);
-    ++r.ScaledJacobianHistogram[static_cast<std::size_t>(bin)];
+    ++r.ScaledJacobianHistogram[static_cast<std::size_t>(JacobianHistogramBin(s, valid->GetComponent(c, 0) != 0.0))];
   }
 
   r.HasAccuracy = fd->GetArray(arrays::MisclassifiedPixelsLinear) != nullptr;
@@ -208,13 +205,7 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
         << (r.TopologyMatches.value_or(false) ? "matches" : "DIFFERS") << "\n";
   }
   out << "Minimum scaled Jacobian " << FormatFixed(r.MinimumScaledJacobian, 4) << ", histogram:\n";
-  for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
-  {
-    const std::string label = b == 0 ? "  not proven valid"
-                                     : "  (" + FormatFixed(0.1 * static_cast<double>(b - 1), 1) + ", " +
-        FormatFixed(0.1 * static_cast<double>(b), 1) + "]";
-    out << std::left << std::setw(20) << label << std::right << r.ScaledJacobianHistogram[b] << "\n";
-  }
+  PrintJacobianHistogram(r.ScaledJacobianHistogram, out);
   if (r.HasAccuracy)
   {
     out << "Misclassified pixels (of " << r.Pixels << "): linear " << r.MisclassifiedLinear << " ("
@@ -340,16 +331,8 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("cells_below_scaled_jacobian_bound").Integer(r.CellsBelowScaledJacobian);
   j.Key("straightened_for_scaled_jacobian").Bool(r.StraightenedForScaledJacobian);
   j.Key("minimum_jacobian").Number(r.MinimumJacobian);
-  j.Key("scaled_jacobian_histogram").BeginArray();
-  for (std::size_t b = 0; b < r.ScaledJacobianHistogram.size(); ++b)
-  {
-    j.BeginObject();
-    j.Key("from").Number(b == 0 ? -HUGE_VAL : 0.1 * static_cast<double>(b - 1));
-    j.Key("to").Number(b == 0 ? 0.0 : 0.1 * static_cast<double>(b));
-    j.Key("cells").Integer(r.ScaledJacobianHistogram[b]);
-    j.EndObject();
-  }
-  j.EndArray();
+  j.Key("scaled_jacobian_histogram");
+  WriteJacobianHistogramJson(r.ScaledJacobianHistogram, j);
   j.EndObject();
   j.Key("accuracy");
   if (r.HasAccuracy)

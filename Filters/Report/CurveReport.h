@@ -48,7 +48,7 @@ struct CurveReport
   std::optional<double> MinimumCornerAngle;
   /// Scaled Jacobian histogram: bin 0 is <= 0 (not proven valid), bins 1..10
   /// are (0, 0.1], (0.1, 0.2], ..., (0.9, 1].
-  std::array<long long, 11> ScaledJacobianHistogram{};
+  JacobianHistogram ScaledJacobianHistogram{};
   long long ShortenedPieces = 0, StraightenedPieces = 0, PiecesShortenedForBounds = 0,
             PiecesShortenedForValidity = 0, UncertifiedPieces = 0, UntanglingRounds = 0;
   /// Measured on the curves (upper bounds, voxels), with the image only.

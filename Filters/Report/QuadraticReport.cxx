@@ -5,6 +5,8 @@
 #include "LabelMesherArrayNames.h"
 #include "JsonWriter.h"
 
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -40,6 +42,12 @@ void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic)
   q.Voxels = FieldValue(fd, arrays::Voxels);
   q.MisclassifiedLinear = FieldValue(fd, arrays::MisclassifiedVoxelsLinear);
   q.MisclassifiedQuadratic = FieldValue(fd, arrays::MisclassifiedVoxelsQuadratic);
+  if (vtkDataArray* scaled = quadratic->GetCellData()->GetArray(arrays::ScaledJacobian))
+    for (vtkIdType c = 0; c < scaled->GetNumberOfTuples(); ++c)
+    {
+      const double s = scaled->GetComponent(c, 0);
+      ++q.ScaledJacobianHistogram[static_cast<std::size_t>(JacobianHistogramBin(s, s > 0.0))];
+    }
   report.Quadratic = q;
 }
 
@@ -68,7 +76,8 @@ void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
       << " certified (bound " << FormatFixed(q.ScaledJacobianBound, 3) << ")";
   if (q.SampledMinimumScaledJacobian)
     out << ", " << FormatFixed(*q.SampledMinimumScaledJacobian, 3) << " sampled";
-  out << "\n";
+  out << "; certified lower bounds:\n";
+  PrintJacobianHistogram(q.ScaledJacobianHistogram, out);
   if (q.MeasuredImageToMesh)
     out << "  curved interfaces: h(I,M) " << FormatFixed(*q.MeasuredImageToMesh, 3) << ", h(M,I) "
         << FormatFixed(*q.MeasuredMeshToImage, 3) << " voxels measured (bounds " << FormatFixed(report.ImageToMeshBound, 3)
@@ -115,6 +124,8 @@ void WriteQuadraticJson(const RunReport& report, JsonWriter& j)
   j.Key("pinned_interior_edges").Integer(q.PinnedEdges);
   j.Key("scaled_jacobian_bound").Number(q.ScaledJacobianBound);
   j.Key("certified_minimum_scaled_jacobian").Number(q.CertifiedMinimumScaledJacobian);
+  j.Key("scaled_jacobian_histogram");
+  WriteJacobianHistogramJson(q.ScaledJacobianHistogram, j);
   optional("sampled_minimum_scaled_jacobian", q.SampledMinimumScaledJacobian);
   optional("measured_image_to_mesh", q.MeasuredImageToMesh);
   optional("measured_mesh_to_image", q.MeasuredMeshToImage);

@@ -203,6 +203,36 @@ void WriteMaterialTableJson(const RunReport& r, JsonWriter& j)
   j.EndArray();
 }
 
+int JacobianHistogramBin(double scaledJacobian, bool provedValid)
+{
+  return provedValid ? std::clamp(static_cast<int>(std::ceil(std::max(scaledJacobian, 1e-12) * 10.0)), 1, 10) : 0;
+}
+
+void PrintJacobianHistogram(const JacobianHistogram& histogram, std::ostream& out)
+{
+  for (std::size_t b = 0; b < histogram.size(); ++b)
+  {
+    const std::string label = b == 0 ? "  not proven valid"
+                                     : "  (" + FormatFixed(0.1 * static_cast<double>(b - 1), 1) + ", " +
+        FormatFixed(0.1 * static_cast<double>(b), 1) + "]";
+    out << std::left << std::setw(20) << label << std::right << histogram[b] << "\n";
+  }
+}
+
+void WriteJacobianHistogramJson(const JacobianHistogram& histogram, JsonWriter& j)
+{
+  j.BeginArray();
+  for (std::size_t b = 0; b < histogram.size(); ++b)
+  {
+    j.BeginObject();
+    j.Key("from").Number(b == 0 ? -HUGE_VAL : 0.1 * static_cast<double>(b - 1));
+    j.Key("to").Number(b == 0 ? 0.0 : 0.1 * static_cast<double>(b));
+    j.Key("cells").Integer(histogram[b]);
+    j.EndObject();
+  }
+  j.EndArray();
+}
+
 void PrintSummary(const RunReport& r, std::ostream& out)
 {
   const char* cellName = r.MeshDimension == 3 ? "tetrahedra" : "triangles";

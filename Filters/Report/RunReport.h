@@ -55,9 +55,17 @@ struct DecimationEntry
   long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0, BorderPasses = 0, LargestAssembledCells = 0;
 };
 
+/// Cells by their certified scaled Jacobian: bin 0 for cells not proved valid, bin b (1..10) for
+/// ((b − 1)/10, b/10].
+using JacobianHistogram = std::array<long long, 11>;
+int JacobianHistogramBin(double scaledJacobian, bool provedValid);
+void PrintJacobianHistogram(const JacobianHistogram& histogram, std::ostream& out);
+void WriteJacobianHistogramJson(const JacobianHistogram& histogram, JsonWriter& json);
+
 /// The quadratic mesh of Order 2 (vtkLabelMesher's port 2 field data, QuadraticOutput.h).
 struct QuadraticEntry
 {
+  JacobianHistogram ScaledJacobianHistogram{}; ///< of the certified lower bounds
   long long Cells = 0, Points = 0;
   long long FittedEdges = 0, CurvedEdges = 0, PulledBackEdges = 0;
   long long CellsFailedScaledJacobian = 0, FacesFailedDistance = 0;

@@ -22,7 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "Support"))
 sys.path.insert(0, HERE)
 import cli_test as cli  # noqa: E402  (same argv: LABELMESHER WORKDIR CASE)
-from export_checks import check_exports  # noqa: E402
+from export_checks import check_exports, tetra10_jacobians  # noqa: E402
 from segmentation_fixture import write_itksnap_labels, write_seg_nrrd, write_slicer_ctbl  # noqa: E402
 
 FORMATS_3D = [".vtu", ".msh", ".inp", ".mesh", ".vtp", ".stl", ".obj"]
@@ -165,24 +165,6 @@ def case_export_curved_msh():
     # Formats without cubic triangles are refused before meshing.
     cli.expect_failure(cli.run("curve", png, "-o", cli.path("curved.mesh")), ".vtu, .vtk or .msh only", 2)
     print("OK: curved mesh as 10-node triangles, %d cells, nodes within %.1e" % (len(cells), worst))
-
-
-def tetra10_jacobians(nodes, steps=4):
-    """det J of quadratic tetrahedra (ten nodes each, VTK's order) on the barycentric lattice of
-    step 1/steps: an independent evaluation, from the written file's nodes."""
-    edges = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
-    dets = []
-    for i in range(steps + 1):
-        for j in range(steps + 1 - i):
-            for k in range(steps + 1 - i - j):
-                l = np.array([steps - i - j - k, i, j, k], dtype=float) / steps
-                dl = [nodes[:, c] * (4 * l[c] - 1) for c in range(4)]
-                for e, (a, b) in enumerate(edges):
-                    dl[a] = dl[a] + nodes[:, 4 + e] * 4 * l[b]
-                    dl[b] = dl[b] + nodes[:, 4 + e] * 4 * l[a]
-                J = np.stack([dl[1] - dl[0], dl[2] - dl[0], dl[3] - dl[0]], axis=-1)
-                dets.append(np.linalg.det(J))
-    return np.stack(dets, axis=-1)
 
 
 def case_export_quadratic():

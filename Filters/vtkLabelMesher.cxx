@@ -67,7 +67,13 @@ bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, c
   {
     // The whole box, background included: the curves keep their guarantees only with every cell
     // certified (QuadraticCurver.h).
-    result = labelmesher::CurveQuadratic(linear, image, parameters);
+    result = labelmesher::CurveQuadratic(linear, image, parameters,
+      labelmesher::ForwardProgress(self, start, self->GetMeasureOutput() ? 0.5 * share : share));
+  }
+  catch (const labelmesher::AbortRequested&)
+  {
+    vtkWarningWithObjectMacro(self, "Meshing aborted on request: output is empty.");
+    return false;
   }
   catch (const std::bad_alloc&)
   {
@@ -361,9 +367,10 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   streaming.BlockCells = blockCells;
 
   // Quadratic cells (and their measurement) take a share of the run after the decimation.
+  // In order: meshing and decimating, the quadratic cells (Order 2), measuring the linear mesh.
   const double quadraticShare = this->Order == 2 ? share * 0.2 : 0.0;
-  share -= quadraticShare;
-  const double runShare = share * (this->MeasureOutput ? 0.8 : 1.0);
+  const double runShare = (share - quadraticShare) * (this->MeasureOutput ? 0.8 : 1.0);
+  const double measureStart = runShare + quadraticShare;
   labelmesher::StreamedResult result;
   labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
   try
@@ -389,7 +396,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
 
   labelmesher::DecimationResult& decimated = result.Decimated;
-  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, share, quadraticShare, decimated.Timings))
+  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, runShare, quadraticShare, decimated.Timings))
   {
     return false;
   }
@@ -417,11 +424,11 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   if (this->MeasureOutput)
   {
     this->SetProgressText("measure");
-    this->UpdateProgress(runShare);
+    this->UpdateProgress(measureStart);
     try
     {
       labelmesher::AddMeasurements(fd, image, kept, this->ImageToMeshDistance, this->MeshToImageDistance,
-        decimated.Timings, [&](int checksDone) { this->UpdateProgress(runShare + (share - runShare) * checksDone / 4.0); });
+        decimated.Timings, [&](int checksDone) { this->UpdateProgress(measureStart + (share - measureStart) * checksDone / 4.0); });
     }
     catch (const std::exception& e)
     {

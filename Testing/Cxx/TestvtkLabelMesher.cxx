@@ -22,7 +22,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
+#include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkPointData.h"
@@ -33,6 +35,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -425,4 +428,74 @@ TEST(vtkLabelMesher, TheCurverFitsTheLabelsTheMeshWasMadeFrom)
   EXPECT_TRUE(SameGrid(composite->GetCurvedOutput(), curver->GetOutput()));
   EXPECT_EQ(FieldScalar(composite->GetCurvedOutput(), arrays::MisclassifiedPixelsCurved),
     FieldScalar(curver->GetOutput(), arrays::MisclassifiedPixelsCurved));
+}
+
+TEST(vtkLabelMesher, OrderTwoAddsCertifiedQuadraticTetrahedraOnPortTwo)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage(TwoBalls(20)));
+  mesher->SetOrder(2);
+  std::vector<double> fractions;
+  vtkNew<vtkCallbackCommand> record;
+  record->SetClientData(&fractions);
+  record->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data));
+  });
+  mesher->AddObserver(vtkCommand::ProgressEvent, record);
+  mesher->Update();
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end())) << "progress went back";
+  EXPECT_EQ(fractions.back(), 1.0);
+  vtkUnstructuredGrid* linear = mesher->GetOutput();
+  vtkUnstructuredGrid* quadratic = mesher->GetCurvedOutput();
+  ASSERT_GT(linear->GetNumberOfCells(), 0);
+  ASSERT_EQ(quadratic->GetNumberOfCells(), linear->GetNumberOfCells()); // the same cells, made quadratic
+  for (vtkIdType c = 0; c < quadratic->GetNumberOfCells(); ++c)
+    ASSERT_EQ(quadratic->GetCellType(c), VTK_QUADRATIC_TETRA);
+  vtkFieldData* fd = quadratic->GetFieldData();
+  const double bound = fd->GetArray(arrays::MinimumScaledJacobianBound)->GetTuple1(0);
+  EXPECT_EQ(bound, 0.1);
+  EXPECT_GE(fd->GetArray(arrays::CertifiedMinimumScaledJacobian)->GetTuple1(0), bound);
+  EXPECT_GE(fd->GetArray(arrays::SampledMinimumScaledJacobian)->GetTuple1(0), bound);
+  EXPECT_GT(fd->GetArray(arrays::CurvedEdges)->GetTuple1(0), 0.0);
+  EXPECT_LT(fd->GetArray(arrays::MisclassifiedVoxelsQuadratic)->GetTuple1(0),
+    fd->GetArray(arrays::MisclassifiedVoxelsLinear)->GetTuple1(0));
+  vtkDataArray* scaled = quadratic->GetCellData()->GetArray(arrays::ScaledJacobian);
+  ASSERT_NE(scaled, nullptr);
+  for (vtkIdType c = 0; c < scaled->GetNumberOfTuples(); ++c)
+    ASSERT_GE(scaled->GetTuple1(c), bound) << "cell " << c;
+}
+
+TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageOrWithoutDecimationIsOneError)
+{
+  for (const bool twoDimensional : { true, false })
+  {
+    vtkNew<vtkLabelMesher> mesher;
+    mesher->SetInputData(twoDimensional ? MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40)
+                                        : MakeVtkImage(MakeBallLabels(12, 4.0)));
+    mesher->SetDecimate(twoDimensional);
+    mesher->SetOrder(2);
+    MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
+    mesher->Update();
+    ASSERT_EQ(errors.Messages.size(), 1u);
+    EXPECT_NE(errors.Messages[0].find("Order 2"), std::string::npos) << errors.Messages[0];
+    EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+    EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
+  }
+}
+
+TEST(vtkLabelMesher, AbortWhileMakingQuadraticCellsEmptiesEveryOutput)
+{
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(MakeVtkImage(TwoBalls(20)));
+  mesher->SetOrder(2);
+  AbortAtStage abort(mesher, "quadratic certify");
+  MessageRecorder warnings(mesher, vtkCommand::WarningEvent);
+  mesher->Update();
+  EXPECT_TRUE(abort.Reached);
+  EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetInterfacesOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
+  ASSERT_FALSE(warnings.Messages.empty());
+  EXPECT_NE(warnings.Messages[0].find("aborted"), std::string::npos) << warnings.Messages[0];
 }

@@ -53,14 +53,18 @@ QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, co
   return result;
 }
 
-QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters)
+QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters,
+  const ProgressObserver& observer)
 {
+  if (!observer.Report("quadratic fit", 0.0))
+    throw AbortRequested{};
   QuadraticResult result = FitQuadraticMesh(std::move(linear), image, parameters);
-  CertifyQuadraticMesh(result, image, parameters);
+  CertifyQuadraticMesh(result, image, parameters, observer);
   return result;
 }
 
-void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters)
+void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters,
+  const ProgressObserver& observer)
 {
   if (!(parameters.MinimumScaledJacobian >= 0.0 && parameters.MinimumScaledJacobian < 1.0))
     throw std::invalid_argument("the minimum scaled Jacobian must be in [0, 1)");
@@ -110,9 +114,17 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
       edgeMoved[e] = edgeMoved[e] || now != before[e];
       before[e] = now;
     }
+    std::size_t moving = 0;
     for (std::size_t f = 0; f < faces.size(); ++f)
+    {
       faceMoved[f] = edgeMoved[static_cast<std::size_t>(faces[f].Edges[0])] ||
         edgeMoved[static_cast<std::size_t>(faces[f].Edges[1])] || edgeMoved[static_cast<std::size_t>(faces[f].Edges[2])];
+      moving += faceMoved[f] ? 1 : 0;
+    }
+    // Most of a run is its first round (every face); later rounds test what still moves.
+    const double done = 1.0 - static_cast<double>(moving) / static_cast<double>(std::max<std::size_t>(faces.size(), 1));
+    if (!observer.Report("quadratic certify", result.Rounds == 1 ? 0.0 : 0.5 + 0.5 * done))
+      throw AbortRequested{};
     std::set<std::size_t> failing; // interface edges to pull back
     bool pinned = false;
     for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)

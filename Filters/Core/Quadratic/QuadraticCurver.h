@@ -38,6 +38,7 @@
 #include "Quadratic/QuadraticFidelity.h"
 #include "Quadratic/QuadraticMesh.h"
 #include "Support/LabelImage.h"
+#include "Support/ProgressObserver.h"
 
 #include <cstddef>
 #include <vector>
@@ -79,7 +80,11 @@ struct QuadraticResult
 /// image it was made from; its bounds at least as tight as the parameters'
 /// (straight faces are not tested again). FitQuadraticMesh then
 /// CertifyQuadraticMesh.
-QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
+/// `observer` sees the stages ("quadratic fit", "quadratic certify": the
+/// fraction of curved faces still moving) and may stop the run (AbortRequested
+/// is thrown, nothing is returned).
+QuadraticResult CurveQuadratic(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters,
+  const ProgressObserver& observer = {});
 
 /// The first stage: edges numbered, interface mid-nodes fitted (uncertified).
 QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, const QuadraticParameters& parameters);
@@ -87,7 +92,8 @@ QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, co
 /// The second: certifies every cell and face and pulls back what fails, until
 /// all hold, whatever the offsets (a fit's, or any other, with Scales in
 /// [0, 1]).
-void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters);
+void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, const QuadraticParameters& parameters,
+  const ProgressObserver& observer = {});
 
 } // namespace labelmesher
 

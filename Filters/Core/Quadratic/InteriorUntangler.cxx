@@ -120,20 +120,46 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
     for (std::size_t e = 0; e < edges; ++e)
       if (Moving[e])
         s.Unknown[e] = unknowns++;
+    // The bounding edges of cells with a moving edge are the prescribed columns (numbered first,
+    // so that the matrices can be assembled in batches).
+    auto touches = [&](std::size_t c) {
+      for (int e = 0; e < 6; ++e)
+        if (s.Unknown[static_cast<std::size_t>(Mesh.CellEdges[c * 6 + e])] >= 0)
+          return true;
+      return false;
+    };
+    for (std::size_t c = 0; c < Mesh.NumberOfCells(); ++c)
+      if (touches(c))
+        for (int e = 0; e < 6; ++e)
+        {
+          const auto edge = static_cast<std::size_t>(Mesh.CellEdges[c * 6 + e]);
+          if (!Free[edge] && s.Prescribed[edge] < 0)
+            s.Prescribed[edge] = prescribed++;
+        }
+    Eigen::SparseMatrix<double> matrix(3 * unknowns, 3 * unknowns);
+    s.Coupling.resize(3 * unknowns, 3 * prescribed);
+    // Triplets in batches of about a million: all of them at once took 0.5 GB on totalseg.
     std::vector<Eigen::Triplet<double>> kff, kfp;
+    auto flush = [&]() {
+      Eigen::SparseMatrix<double> part(matrix.rows(), matrix.cols()), coupling(s.Coupling.rows(), s.Coupling.cols());
+      part.setFromTriplets(kff.begin(), kff.end());
+      coupling.setFromTriplets(kfp.begin(), kfp.end());
+      matrix += part;
+      s.Coupling += coupling;
+      kff.clear();
+      kfp.clear();
+    };
     for (std::size_t c = 0; c < Mesh.NumberOfCells(); ++c)
     {
+      if (kff.size() + kfp.size() > (1u << 20))
+        flush();
+      if (!touches(c))
+        continue;
       std::int64_t node[10]; // -1 for corners (fixed), else the edge
-      bool touches = false;
       for (int k = 0; k < 4; ++k)
         node[k] = -1;
       for (int e = 0; e < 6; ++e)
-      {
         node[4 + e] = Mesh.CellEdges[c * 6 + e];
-        touches = touches || s.Unknown[static_cast<std::size_t>(node[4 + e])] >= 0;
-      }
-      if (!touches)
-        continue;
       // The straight net: corners and edge midpoints.
       Point3 net[10];
       const std::int64_t* v = Mesh.Linear.Cell(c);
@@ -161,8 +187,6 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
             const int ub = s.Unknown[edge];
             if (ub < 0 && Free[edge])
               continue; // a free edge that does not move: straight
-            if (ub < 0 && s.Prescribed[edge] < 0)
-              s.Prescribed[edge] = prescribed++;
             for (int i = 0; i < 3; ++i)
               for (int j = 0; j < 3; ++j)
               {
@@ -176,10 +200,7 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
         }
       }
     }
-    Eigen::SparseMatrix<double> matrix(3 * unknowns, 3 * unknowns);
-    matrix.setFromTriplets(kff.begin(), kff.end());
-    s.Coupling.resize(3 * unknowns, 3 * prescribed);
-    s.Coupling.setFromTriplets(kfp.begin(), kfp.end());
+    flush();
     if (unknowns > 0)
     {
       s.Solver.compute(matrix);

@@ -181,7 +181,7 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
   auto retest = [&](std::size_t f) { return !changed || (*changed)[f]; };
   const double T = bounds.Tolerance;
   std::vector<char> failing(faces.size(), 0);
-  std::vector<std::vector<ConvexPiece>> flattened(faces.size());
+  std::vector<std::vector<std::array<Point3, 3>>> flattened(faces.size()); // curved faces' sub-triangles
   std::vector<std::array<Point3, 6>> nodes(faces.size()), hull(faces.size());
   std::vector<std::size_t> curved;
   for (std::size_t f = 0; f < faces.size(); ++f)
@@ -197,8 +197,7 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       failing[f] = 1;
       continue;
     }
-    for (const auto& t : FlattenFace(nodes[f], level))
-      flattened[f].push_back(Triangle(t));
+    flattened[f] = FlattenFace(nodes[f], level);
   }
 
   // Mesh to image: each sub-triangle near the image boundary of each non-zero material beside it.
@@ -218,8 +217,9 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       ForEachBoundaryFace(image, VoxelsNear(hull[f], meshReach + 1.0, image), m,
         [&](int i, int j, int k, int axis) { targets.push_back(VoxelFace(i, j, k, axis)); });
       std::vector<ConvexPiece> near;
-      for (const ConvexPiece& t : flattened[f])
+      for (const std::array<Point3, 3>& triangle : flattened[f])
       {
+        const ConvexPiece t = Triangle(triangle);
         // Only voxel faces within reach of the sub-triangle (its points are within `radius` of
         // its centroid) can certify it: the exact test gets those.
         const Point3 centroid = Scale(Add(Add(t.Points[0], t.Points[1]), t.Points[2]), 1.0 / 3.0);
@@ -304,9 +304,12 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
           else
           {
             near.push_back(g);
-            for (const ConvexPiece& t : flattened[g])
+            for (const std::array<Point3, 3>& triangle : flattened[g])
+            {
+              const ConvexPiece t = Triangle(triangle);
               if (inReach(t))
                 all.push_back(t);
+            }
           }
         }
         if (near.empty())

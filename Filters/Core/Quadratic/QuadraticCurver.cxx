@@ -103,6 +103,7 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
   // A round tests again only the cells and faces whose mid-nodes moved since the last one.
   std::vector<Point3> before(mesh.Edges.size());
   std::vector<char> edgeMoved(mesh.Edges.size(), 1), faceMoved(faces.size(), 1);
+  std::vector<char> facePending(faces.size(), 0); ///< moved since the distances were last tested
   InteriorUntangler untangler(mesh, free);
   for (;;)
   {
@@ -158,13 +159,21 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
       failing.insert(blamed.begin(), blamed.end());
     }
     std::fill(edgeMoved.begin(), edgeMoved.end(), 0);
-    if (parameters.CertifyDistances)
-      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds, &faceMoved))
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      facePending[f] = facePending[f] || faceMoved[f];
+    // The distances are tested once the cells hold: a round that pulls curves back for a cell
+    // moves those faces again, and their test would be wasted (the loop ends only after a round
+    // that changes nothing, which has tested every face moved since the last test).
+    if (parameters.CertifyDistances && failing.empty() && !pinned)
+    {
+      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds, &facePending))
       {
         failedFaces.insert(f);
         for (std::int64_t e : faces[f].Edges)
           failing.insert(static_cast<std::size_t>(e));
       }
+      std::fill(facePending.begin(), facePending.end(), 0);
+    }
     bool changed = pinned;
     for (std::size_t e : failing)
     {

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
 
 namespace labelmesher
 {
@@ -266,61 +265,88 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
         materials.push_back(m);
   std::sort(materials.begin(), materials.end());
   materials.erase(std::unique(materials.begin(), materials.end()), materials.end());
+  // The voxel faces to test, each once per material: those near a changed face (curved, or
+  // straight again: its curve may have covered them, hence near any shape it has had: its
+  // full-scale hull).
+  struct VoxelFaceOf
+  {
+    std::int32_t Material;
+    long long Key; ///< voxel (i + 1, j + 1, k + 1) and axis, packed
+  };
+  const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
+  std::vector<VoxelFaceOf> voxelFaces;
   for (std::int32_t m : materials)
   {
-    std::unordered_set<long long> tested;
-    const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
-    // Voxel faces near a changed face (curved, or straight again: its curve may have covered them,
-    // hence near any shape it has had: its full-scale hull).
+    const std::size_t first = voxelFaces.size();
     for (std::size_t f = 0; f < faces.size(); ++f)
     {
       if (!bounds_(faces[f], m) || !(changed ? (*changed)[f] : FaceIsCurved(mesh, faces[f])))
         continue;
       ForEachBoundaryFace(image, VoxelsNear(FullScaleControlPoints(mesh, faces[f]), h + 1.0, image), m,
         [&](int i, int j, int k, int axis) {
-        const long long key = (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis;
-        if (!tested.insert(key).second)
-          return;
-        const ConvexPiece voxel = VoxelFace(i, j, k, axis);
-        const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
-        std::vector<ConvexPiece> straight, all;
-        std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
-        // Only pieces within h of some point of the voxel face can certify it (its points are
-        // within sqrt(1/2) of its centre): the others are left out of the exact test.
-        const double reach = (h + 0.7072) * (h + 0.7072);
-        auto inReach = [&](const ConvexPiece& t) {
-          return SquaredDistanceToTriangle(centre, t.Points[0], t.Points[1], t.Points[2]) <= reach;
-        };
-        for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
-        {
-          if (!bounds_(faces[g], m))
-            continue;
-          if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
-          {
-            const ConvexPiece t = Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] });
-            if (inReach(t))
-              straight.push_back(t), all.push_back(t);
-          }
-          else
-          {
-            near.push_back(g);
-            for (const std::array<Point3, 3>& triangle : flattened[g])
-            {
-              const ConvexPiece t = Triangle(triangle);
-              if (inReach(t))
-                all.push_back(t);
-            }
-          }
-        }
-        if (near.empty())
-          return; // the linear mesh's own boundary here: certified by the decimator
-        if (WithinDistance(voxel, straight, h) || WithinDistance(voxel, all, h - T))
-          return;
-        for (std::size_t g : near)
-          failing[g] = 1;
+        voxelFaces.push_back({ m, (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis });
       });
     }
+    auto byKey = [](const VoxelFaceOf& a, const VoxelFaceOf& b) { return a.Key < b.Key; };
+    auto sameKey = [](const VoxelFaceOf& a, const VoxelFaceOf& b) { return a.Key == b.Key; };
+    std::sort(voxelFaces.begin() + static_cast<std::ptrdiff_t>(first), voxelFaces.end(), byKey);
+    voxelFaces.erase(std::unique(voxelFaces.begin() + static_cast<std::ptrdiff_t>(first), voxelFaces.end(), sameKey),
+      voxelFaces.end());
   }
+  // Each voxel face against m's faces within reach; independent, so both cores take them, and
+  // each thread lists the curved faces to blame (flags: the order does not matter).
+  std::vector<std::vector<std::size_t>> blamed(MaxThreads());
+  ParallelChunks(voxelFaces.size(), 256, [&](unsigned thread, std::size_t begin, std::size_t end) {
+    std::vector<ConvexPiece> straight, all;
+    std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
+    for (std::size_t index = begin; index < end; ++index)
+    {
+      const std::int32_t m = voxelFaces[index].Material;
+      long long key = voxelFaces[index].Key;
+      const int axis = static_cast<int>(key % 3);
+      key /= 3;
+      const int i = static_cast<int>(key % nx) - 1, j = static_cast<int>((key / nx) % ny) - 1,
+                k = static_cast<int>(key / (nx * ny)) - 1;
+      const ConvexPiece voxel = VoxelFace(i, j, k, axis);
+      const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
+      straight.clear(), all.clear(), near.clear();
+      // Only pieces within h of some point of the voxel face can certify it (its points are
+      // within sqrt(1/2) of its centre): the others are left out of the exact test.
+      const double reach = (h + 0.7072) * (h + 0.7072);
+      auto inReach = [&](const ConvexPiece& t) {
+        return SquaredDistanceToTriangle(centre, t.Points[0], t.Points[1], t.Points[2]) <= reach;
+      };
+      for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
+      {
+        if (!bounds_(faces[g], m))
+          continue;
+        if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
+        {
+          const ConvexPiece t = Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] });
+          if (inReach(t))
+            straight.push_back(t), all.push_back(t);
+        }
+        else
+        {
+          near.push_back(g);
+          for (const std::array<Point3, 3>& triangle : flattened[g])
+          {
+            const ConvexPiece t = Triangle(triangle);
+            if (inReach(t))
+              all.push_back(t);
+          }
+        }
+      }
+      if (near.empty())
+        continue; // the linear mesh's own boundary here: certified by the decimator
+      if (WithinDistance(voxel, straight, h) || WithinDistance(voxel, all, h - T))
+        continue;
+      blamed[thread].insert(blamed[thread].end(), near.begin(), near.end());
+    }
+  });
+  for (const std::vector<std::size_t>& list : blamed)
+    for (std::size_t g : list)
+      failing[g] = 1;
   std::vector<std::size_t> out;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (failing[f])

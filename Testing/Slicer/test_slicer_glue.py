@@ -76,6 +76,27 @@ class ProcessTest(unittest.TestCase):
         self.assertIn("Labels", names)  # the shared built-in table stays
 
 
+class CurvedVolumeProcessTest(unittest.TestCase):
+    """Curve on a volume: the model holds the quadratic tetrahedra, coloured by Material like the
+    linear mesh, and the result the quadratic report."""
+
+    def test_the_model_holds_quadratic_tetrahedra(self):
+        model = slicer.mrmlScene.AddNewNodeByClass("vtkMRMLModelNode", "quadratic mesh")
+        result = LabelMesher.LabelMesherLogic().process(two_segments(), ["Segment_1", "Segment_2"], None, model,
+                                                        MeshingParameters(curve=True))
+        mesh = model.GetMesh()
+        self.assertIs(mesh, result.mesh)
+        self.assertGreater(mesh.GetNumberOfCells(), 0)
+        self.assertEqual({mesh.GetCellType(c) for c in range(mesh.GetNumberOfCells())}, {vtk.VTK_QUADRATIC_TETRA})
+        display = model.GetDisplayNode()
+        self.assertEqual((display.active_scalar, display.location), ("Material", vtk.vtkAssignAttribute.CELL_DATA))
+        self.assertEqual(sorted(set(mesh.GetCellData().GetArray("Material").GetValue(c)
+                                    for c in range(mesh.GetNumberOfCells()))), [1, 2])
+        self.assertEqual(display.GetColorNode().GetColorName(2), "tumour")
+        self.assertTrue(result.report["quadratic"]["guarantees_hold"])
+        self.assertIn("Quadratic mesh: ", result.summary)
+
+
 class ApplyErrorTest(unittest.TestCase):
     """Apply with a logic that fails: expected failures are one line, others reach a dialog."""
 

@@ -11,7 +11,7 @@ import unittest
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, VTK_QUADRATIC_TETRA
 
 from label_nrrd import read_label_nrrd
 from LabelMesherLib.meshing import (Material, MeshingCancelled, MeshingError, MeshingParameters,
@@ -41,6 +41,14 @@ def points(mesh):
 
 def tetrahedra(mesh):
     return vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 4)
+
+
+def two_boxes():
+    """A small 3D label volume [k, j, i]: a box of label 1 holding a cube of label 2."""
+    labels = np.zeros((20, 20, 20), dtype=np.uint8)
+    labels[4:16, 5:15, 3:17] = 1
+    labels[8:12, 8:12, 8:12] = 2
+    return labels
 
 
 def check_guarantees(test, report, bound):
@@ -218,11 +226,12 @@ class CurvedSliceTest(unittest.TestCase):
         sign = np.sign(jacobians[0, 0])
         self.assertTrue(np.all(jacobians * sign > 0.0), f"smallest {np.min(jacobians * sign)}")
 
-    def test_curving_a_volume_or_a_bad_smoothness_is_one_plain_error(self):
+    def test_curving_a_volume_without_decimation_or_a_bad_smoothness_is_one_plain_error(self):
         volume = np.zeros((6, 6, 6), dtype=np.uint8)
         volume[1:5, 1:5, 1:5] = 1
-        with self.assertRaisesRegex(MeshingError, "2D image"):
-            mesh_labels(volume, np.eye(4), parameters=MeshingParameters(curve=True))
+        with self.assertRaisesRegex(MeshingError, "^curving a volume \\(quadratic tetrahedra\\) needs decimation") as caught:
+            mesh_labels(volume, np.eye(4), parameters=MeshingParameters(curve=True, decimate=False))
+        self.assertNotIn("\n", str(caught.exception))
         with self.assertRaisesRegex(MeshingError, "smoothness"):
             mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(curve=True, smoothness=3))
         with self.assertRaisesRegex(MeshingError, "tension"):
@@ -237,12 +246,152 @@ class CurvedSliceTest(unittest.TestCase):
         self.assertGreaterEqual(max(f for f, _ in asked), 0.8)
 
 
+# VTK_QUADRATIC_TETRA's nodes: corners 0-3, then the mid-nodes of these edges.
+QUADRATIC_EDGES = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
+# Every barycentric point whose coordinates are multiples of 1/4 (35, the corners among them).
+QUARTER_GRID = np.array([(a, b, c, 4 - a - b - c) for a in range(5) for b in range(5 - a)
+                         for c in range(5 - a - b)], dtype=float) / 4.0
+
+
+def quadratic_positions(nodes, barycentric):
+    """x at each barycentric point (points x 4) of each quadratic tetrahedron (nodes: cells x 10 x 3):
+    the shape functions L_i (2 L_i - 1) at corner i, 4 L_i L_j at the mid-node of edge (i, j)."""
+    L = barycentric
+    shape = np.concatenate([L * (2.0 * L - 1.0), np.stack([4.0 * L[:, i] * L[:, j] for i, j in QUADRATIC_EDGES], 1)], 1)
+    return np.einsum("pn,cnx->cpx", shape, nodes)
+
+
+def quadratic_jacobians(nodes, barycentric):
+    """det J (cells x points) of each quadratic tetrahedron at each barycentric point, exactly from
+    the shape functions (x(r, s, t) with r, s, t = L1, L2, L3, L0 = 1 - r - s - t): positive where the
+    cell is oriented as a linear tetrahedron (b - a, c - a, d - a) of positive volume."""
+    L = barycentric
+    along = []  # dx/dL_k, the L's taken as independent
+    for k in range(4):
+        g = (4.0 * L[:, k] - 1.0)[None, :, None] * nodes[:, None, k, :]
+        for e, (i, j) in enumerate(QUADRATIC_EDGES):
+            if k in (i, j):
+                g = g + 4.0 * L[:, j if k == i else i][None, :, None] * nodes[:, None, 4 + e, :]
+        along.append(g)
+    return np.linalg.det(np.stack([along[1] - along[0], along[2] - along[0], along[3] - along[0]], axis=-1))
+
+
+class QuadraticVolumeTest(unittest.TestCase):
+    """A small 3D label volume curved (quadratic tetrahedra, vtkLabelMesher's Order 2), placed by the
+    oblique matrix with anisotropic spacing, with and without its reflection."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.labels = two_boxes()
+        spacing, origin = (1.0, 0.8, 1.3), (-4.0, 12.5, 7.25)
+        cls.matrices = {reflect: oblique_ijk_to_ras(spacing, origin, reflect) for reflect in (False, True)}
+        cls.progress = []
+        cls.results = {reflect: mesh_labels(cls.labels, matrix, [Material(2, "core", (0.1, 0.6, 0.9))],
+                                            MeshingParameters(curve=True),
+                                            progress=(lambda f, text: cls.progress.append(f)) if reflect else None)
+                       for reflect, matrix in cls.matrices.items()}
+
+    def nodes(self, mesh):
+        connectivity = vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 10)
+        return points(mesh)[connectivity]
+
+    def test_only_quadratic_tetrahedra_with_their_materials(self):
+        for reflect, result in self.results.items():
+            with self.subTest(reflect=reflect):
+                mesh = result.mesh
+                self.assertGreater(mesh.GetNumberOfCells(), 0)
+                self.assertTrue(np.all(vtk_to_numpy(mesh.GetCellTypesArray()) == VTK_QUADRATIC_TETRA))
+                self.assertTrue(np.all(np.diff(vtk_to_numpy(mesh.GetCells().GetOffsetsArray())) == 10))
+                material = vtk_to_numpy(mesh.GetCellData().GetArray("Material"))
+                counts = {str(m): int(n) for m, n in zip(*np.unique(material, return_counts=True))}
+                self.assertEqual(counts, {m: n for m, n in result.report["mesh"]["cells_per_material"].items()})
+                self.assertEqual(mesh.GetFieldData().GetAbstractArray("MaterialName").GetValue(1), "core")
+        self.assertEqual(self.progress, sorted(self.progress))
+        self.assertEqual(self.progress[-1], 1.0)
+
+    def test_report_states_the_quadratic_guarantees(self):
+        for reflect, result in self.results.items():
+            with self.subTest(reflect=reflect):
+                report, q = result.report, result.report["quadratic"]
+                check_guarantees(self, report, 15.0)  # the linear mesh's, as before
+                self.assertNotIn("curve", report)
+                self.assertEqual(q["cells"], result.mesh.GetNumberOfCells())
+                self.assertEqual(q["nodes"], result.mesh.GetNumberOfPoints())
+                self.assertTrue(q["guarantees_hold"])
+                self.assertEqual(q["scaled_jacobian_bound"], 0.1)
+                self.assertGreaterEqual(q["certified_minimum_scaled_jacobian"], q["scaled_jacobian_bound"])
+                self.assertGreaterEqual(q["sampled_minimum_scaled_jacobian"], q["certified_minimum_scaled_jacobian"] - 1e-12)
+                self.assertGreater(q["curved_edges"], 0)
+                for side in ("image_to_mesh", "mesh_to_image"):
+                    self.assertLessEqual(q[f"measured_{side}"], report["parameters"][side] + q["measure_resolution"] + 1e-9)
+                self.assertIsNotNone(q["misclassified_quadratic"])
+                self.assertIn("Quadratic mesh: ", result.summary)
+                self.assertIn("certified (bound 0.100)", result.summary)
+
+    def test_every_cell_has_positive_jacobian_in_ras(self):
+        self.assertLess(np.linalg.det(self.matrices[True][:3, :3]), 0.0)
+        for reflect, result in self.results.items():
+            with self.subTest(reflect=reflect):
+                nodes = self.nodes(result.mesh)
+                jacobians = quadratic_jacobians(nodes, QUARTER_GRID)
+                self.assertTrue(np.all(jacobians > 0.0), f"{np.sum(np.any(jacobians <= 0.0, axis=1))} of "
+                                f"{len(nodes)} cells not positive")
+                # min / max of the samples bounds each cell's scaled Jacobian from above: it holds the
+                # certified lower bound (cell data ScaledJacobian) and the asked 0.1.
+                ratio = jacobians.min(axis=1) / jacobians.max(axis=1)
+                certified = vtk_to_numpy(result.mesh.GetCellData().GetArray("ScaledJacobian"))
+                self.assertTrue(np.all(ratio >= certified - 1e-9))
+                self.assertGreaterEqual(ratio.min(), 0.1)
+                # The helper itself: straight cells (mid-nodes halfway) have det J = 6 x their volume.
+                straight = np.concatenate([nodes[:, :4], (nodes[:, [i for i, _ in QUADRATIC_EDGES]]
+                                                         + nodes[:, [j for _, j in QUADRATIC_EDGES]]) / 2.0], 1)
+                a, b, c, d = (nodes[:, i] for i in range(4))
+                volumes = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a)
+                np.testing.assert_allclose(quadratic_jacobians(straight, QUARTER_GRID),
+                                           np.repeat(volumes[:, None], len(QUARTER_GRID), 1), rtol=1e-9)
+
+    def test_cells_lie_on_their_voxels_in_ras(self):
+        # Every sample point of every cell, back from RAS to continuous IJK, lies within the
+        # mesh-to-image bound (2 voxels) of a voxel of the cell's material; the cells' centres on one.
+        reach = 2
+        for reflect, result in self.results.items():
+            with self.subTest(reflect=reflect):
+                inverse = np.linalg.inv(self.matrices[reflect])
+                material = vtk_to_numpy(result.mesh.GetCellData().GetArray("Material"))
+                nodes = self.nodes(result.mesh)
+                for grid, near_share in ((np.full((1, 4), 0.25), 1.0), (QUARTER_GRID, 0.0)):
+                    ras = quadratic_positions(nodes, grid)
+                    ijk = np.einsum("ij,cpj->cpi", inverse[:3, :3], ras) + inverse[:3, 3]
+                    nearest = np.clip(np.rint(ijk).astype(int), 0, np.array(self.labels.shape[::-1]) - 1)
+                    labels = self.labels[nearest[..., 2], nearest[..., 1], nearest[..., 0]]
+                    if near_share:
+                        self.assertGreaterEqual(np.mean(labels == material[:, None]), 0.9)
+                    for m in np.unique(material):
+                        padded = np.pad(self.labels == m, reach)
+                        grown = np.zeros_like(padded)
+                        for dk in range(-reach, reach + 1):
+                            for dj in range(-reach, reach + 1):
+                                for di in range(-reach, reach + 1):
+                                    grown |= np.roll(padded, (dk, dj, di), axis=(0, 1, 2))
+                        own = nearest[material == m] + reach
+                        near = grown[own[..., 2], own[..., 1], own[..., 0]]
+                        self.assertTrue(np.all(near), f"material {m}: {np.sum(~near)} points far from it")
+
+    def test_cancel_while_making_quadratic_cells(self):
+        asked = []
+        with self.assertRaises(MeshingCancelled):
+            mesh_labels(self.labels, self.matrices[True], parameters=MeshingParameters(curve=True),
+                        progress=lambda f, text: asked.append(text),
+                        should_abort=lambda: asked[-1].startswith("quadratic"))
+        # The filter stopped within the quadratic stage: it never went on to measure.
+        self.assertTrue(asked[-1].startswith("quadratic"), asked[-3:])
+        self.assertFalse([text for text in asked if text.startswith("measure")])
+
+
 class ProgressCancelAndErrorsTest(unittest.TestCase):
 
     def setUp(self):
-        self.labels = np.zeros((20, 20, 20), dtype=np.uint8)
-        self.labels[4:16, 5:15, 3:17] = 1
-        self.labels[8:12, 8:12, 8:12] = 2
+        self.labels = two_boxes()
 
     def test_progress_then_cancel_then_a_new_run(self):
         seen = []

@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The LabelMesher module's logic without 3D Slicer: a label array, its IJK to RAS
 placement and the segments' names and colours in; vtkLabelMesher (the wrapped VTK
-module ``labelmesher``: mesher, decimator and, for one slice on request, curver)
-run; a tetrahedral/triangle mesh in RAS (curved: cubic Bezier triangles) and
-vtkLabelMeshReport's report out, the same the CLI writes. Slicer's own classes
-appear only in ``LabelMesher.py``; this file needs numpy and VTK's Python
-bindings, so it is tested with Debian's Python.
+module ``labelmesher``: mesher, decimator and, on request, curver: a slice's
+cubic Bezier triangles, a volume's quadratic tetrahedra) run; a tetrahedral or
+triangle mesh in RAS (curved: cubic Bezier triangles for a slice, quadratic
+tetrahedra for a volume) and vtkLabelMeshReport's report out, the same the CLI
+writes. Slicer's own classes appear only in ``LabelMesher.py``; this file needs
+numpy and VTK's Python bindings, so it is tested with Debian's Python.
 
 Placement: Slicer's IJK to RAS matrix is M = [R diag(s) | o] for a volume with
 spacing s, direction R and origin o. The mesh is made in the image's own frame
@@ -13,8 +14,9 @@ spacing s, direction R and origin o. The mesh is made in the image's own frame
 voxels of the smallest spacing and their angle bounds hold as proved), then
 every point p is placed at R p + o. R is orthogonal, so angles, distances and
 topology are unchanged; a reflection (det R < 0, common for LPS files) would
-turn every tetrahedron inside out, so two of its vertices are swapped back. A
-sheared matrix has no such rigid placement and is refused.
+turn every tetrahedron inside out, so two of its corners are swapped back (a
+quadratic tetrahedron's mid-nodes with them). A sheared matrix has no such
+rigid placement and is refused.
 """
 import json
 from dataclasses import dataclass, field
@@ -24,7 +26,7 @@ import numpy as np
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints, vtkStringArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
+from vtkmodules.vtkCommonDataModel import VTK_QUADRATIC_TETRA, VTK_TETRA, vtkImageData, vtkUnstructuredGrid
 
 import labelmesher
 
@@ -59,9 +61,13 @@ class MeshingParameters:
     decimate: bool = _DEFAULTS.GetDecimate()
     minimum_angle: float = _DEFAULTS.GetMinimumAngle()  # the decimator keeps every angle at least this (<= GetProvenAngleBound)
     include_background: bool = _DEFAULTS.GetIncludeBackground()
-    curve: bool = _DEFAULTS.GetCurve()  # one slice only: curve the mesh, keeping validity and both bounds
-    smoothness: int = _DEFAULTS.GetSmoothness()  # 1 (C1, fitted to the image) or 2 (C2) at the curves' joints
-    tension: float = _DEFAULTS.GetTension()  # C1 handle length factor, dimensionless, [0, 1]
+    # Curve the mesh, keeping both distance bounds and every material's topology: a slice into cubic
+    # Bezier triangles (vtkLabelMesher's Curve: every cell proven valid), a volume into quadratic
+    # tetrahedra (its Order 2, with decimation only: every cell's scaled Jacobian certified at least
+    # MinimumScaledJacobian, 0.1, by the Bernstein coefficients of det J).
+    curve: bool = _DEFAULTS.GetCurve()
+    smoothness: int = _DEFAULTS.GetSmoothness()  # a slice's curves: 1 (C1, fitted to the image) or 2 (C2) at their joints
+    tension: float = _DEFAULTS.GetTension()  # a slice's C1 curves: handle length factor, dimensionless, [0, 1]
     block_cells: int = _DEFAULTS.GetBlockCells()  # decimating: initial cells per block (0: one block)
     memory_limit: float = _DEFAULTS.GetMemoryLimit()  # MiB the process may hold; a run estimated above it is refused (0: available memory)
 
@@ -78,9 +84,10 @@ class MeshingParameters:
             raise MeshingError(f"block cells must be a whole number of cells, 0 or more, not {self.block_cells}")
         if not (0.0 <= self.memory_limit < float("inf")):
             raise MeshingError(f"memory limit must be 0 (the memory available) or more MiB, not {self.memory_limit}")
-        if self.curve:
-            if dimension != 2:
-                raise MeshingError("curving needs a 2D image (a single slice); this one is 3D")
+        if self.curve and dimension == 3 and not self.decimate:
+            # vtkLabelMesher refuses Order 2 without Decimate: its quadratic cells are the decimated ones.
+            raise MeshingError("curving a volume (quadratic tetrahedra) needs decimation: turn decimation on")
+        if self.curve and dimension == 2:
             if self.smoothness not in (1, 2):
                 raise MeshingError(f"smoothness must be 1 (C1) or 2 (C2), not {self.smoothness}")
             if not (0.0 <= self.tension <= 1.0):
@@ -100,10 +107,15 @@ class Placement:
 
 @dataclass
 class MeshingResult:
-    mesh: vtkUnstructuredGrid          # in RAS, cell data "Material"; curved: VTK_BEZIER_TRIANGLE cells
+    # In RAS, cell data "Material". Curved: a slice's VTK_BEZIER_TRIANGLE cells, or a volume's
+    # VTK_QUADRATIC_TETRA cells (10 nodes in VTK's order, cell data "ScaledJacobian": each cell's
+    # certified lower bound of min det J / max det J); the linear mesh is then only in the report.
+    mesh: vtkUnstructuredGrid
     interfaces: object                 # vtkPolyData of the linear mesh's interfaces (port 1), in RAS
     # vtkLabelMeshReport's JSON of the linear mesh (`labelmesher mesh --report`'s keys), its "image"
-    # with the placement added; curved, "curve" holds the curve report (`labelmesher curve --report`'s).
+    # with the placement added; a curved slice's "curve" holds the curve report (`labelmesher curve
+    # --report`'s), a curved volume's "quadratic" the quadratic mesh's part (`labelmesher mesh
+    # --order 2 --report`'s; null otherwise).
     report: Dict = field(default_factory=dict)
     summary: str = ""                  # vtkLabelMeshReport's text summary (the CLI's)
 
@@ -186,14 +198,21 @@ def place(data, placement: Placement):
         _reorient_tetrahedra(data)
 
 
+# A reflection makes every tetrahedron's det J negative: its corners 1 and 2 are swapped back, and a
+# quadratic tetrahedron's mid-nodes with them (VTK's order: corners 0-3, then the mid-nodes of edges
+# (0,1), (1,2), (2,0), (0,3), (1,3), (2,3); edge (0,1) becomes (0,2), (1,3) becomes (2,3)).
+_REORIENTED_NODES = {VTK_TETRA: [0, 2, 1, 3], VTK_QUADRATIC_TETRA: [0, 2, 1, 3, 6, 5, 4, 7, 9, 8]}
+
+
 def _reorient_tetrahedra(grid: vtkUnstructuredGrid):
-    # A reflection makes every tetrahedron's signed volume negative: swap vertices 1 and 2.
     cells = grid.GetCells()
     offsets = vtk_to_numpy(cells.GetOffsetsArray())
     connectivity = vtk_to_numpy(cells.GetConnectivityArray()).copy()
     types = vtk_to_numpy(grid.GetCellTypesArray())
-    starts = offsets[:-1][(types == 10) & (np.diff(offsets) == 4)]
-    connectivity[starts + 1], connectivity[starts + 2] = connectivity[starts + 2].copy(), connectivity[starts + 1].copy()
+    for cell_type, order in _REORIENTED_NODES.items():
+        starts = offsets[:-1][(types == cell_type) & (np.diff(offsets) == len(order))]
+        nodes = starts[:, np.newaxis] + np.arange(len(order))
+        connectivity[nodes] = connectivity[nodes][:, order]
     cells.SetData(numpy_to_vtk(offsets, deep=1), numpy_to_vtk(connectivity, deep=1))
     grid.SetCells(grid.GetCellTypesArray(), cells)
 
@@ -219,13 +238,16 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
                 progress: Optional[Callable[[float, str], None]] = None,
                 should_abort: Optional[Callable[[], bool]] = None) -> MeshingResult:
     """Meshes a label array placed by ijk_to_ras with vtkLabelMesher (mesher and decimator block by
-    block, or the mesher alone without parameters.decimate; then, parameters.curve and one slice,
-    the curver); returns the mesh in RAS and vtkLabelMeshReport's report. Raises MeshingError (bad
-    input, the filter's error, an untangling failure) or MeshingCancelled."""
+    block, or the mesher alone without parameters.decimate; then, with parameters.curve, a slice's
+    cubic curver (Curve) or a volume's quadratic tetrahedra (Order 2)); returns the mesh in RAS (the
+    curved one when curving) and vtkLabelMeshReport's report. Raises MeshingError (bad input, the
+    filter's error, an untangling failure) or MeshingCancelled."""
     parameters = parameters or MeshingParameters()
     placement = placement_from_ijk_to_ras(ijk_to_ras)
     image = label_image(labels_kji, placement.spacing, selected)
-    parameters.validate(_MESHER.GetImageDimension(image))
+    dimension = _MESHER.GetImageDimension(image)
+    parameters.validate(dimension)
+    quadratic = parameters.curve and dimension == 3  # a volume's curved cells: quadratic tetrahedra
     known = {m.label: m for m in materials}
     present = sorted(int(v) for v in np.unique(vtk_to_numpy(image.GetPointData().GetScalars()))
                      if v or parameters.include_background)
@@ -242,7 +264,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     mesher.SetIncludeBackground(parameters.include_background)
     mesher.SetMemoryLimit(parameters.memory_limit)
     mesher.SetMeasureOutput(True)
-    mesher.SetCurve(parameters.curve)
+    mesher.SetCurve(parameters.curve and not quadratic)  # a slice: cubic Bezier triangles
+    mesher.SetOrder(2 if quadratic else 1)
     mesher.SetSmoothness(parameters.smoothness)
     mesher.SetTension(parameters.tension)
     errors: List[str] = []
@@ -267,7 +290,7 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
         builder.SetCurvedMesh(mesh)
     report = json.loads(builder.GetMeshJSON())
     report["image"].update(ijk_to_ras_rotation=placement.rotation.tolist(), origin_ras=placement.origin.tolist())
-    if parameters.curve:
+    if parameters.curve and not quadratic:  # a volume's quadratic part is the mesh report's "quadratic"
         report["curve"] = json.loads(builder.GetCurveJSON())
     summary = builder.GetSummary()
     place(mesh, placement)

@@ -119,8 +119,18 @@ std::string vtkLabelMeshReport::GetCurveJSON()
 
 std::string vtkLabelMeshReport::GetJSON()
 {
-  const bool curved = this->Curved && this->Curved->GetNumberOfCells() > 0;
-  return curved ? this->GetCurveJSON() : this->GetMeshJSON();
+  // A quadratic mesh is part of the mesh report (its "quadratic" object); only Bezier curves
+  // make a curve report.
+  return this->Text([](const Figures& f, std::ostream& out) {
+    if (f.Curved)
+    {
+      labelmesher::report::WriteCurveJson(*f.Curved, out);
+    }
+    else
+    {
+      labelmesher::report::WriteJson(f.Linear, out);
+    }
+  });
 }
 
 std::string vtkLabelMeshReport::GetSummary()
@@ -143,7 +153,7 @@ bool vtkLabelMeshReport::GetGuaranteesHold()
   try
   {
     const Figures f = this->Gather();
-    if (!labelmesher::report::GuaranteesHold(f.Linear))
+    if (!labelmesher::report::GuaranteesHold(f.Linear) || !labelmesher::report::QuadraticHolds(f.Linear))
     {
       return false;
     }

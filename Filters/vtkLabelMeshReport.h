@@ -65,8 +65,9 @@ public:
   void SetMesh(vtkUnstructuredGrid* mesh);
 
   /**
-   * The curved mesh: vtkLabelMesher's output port 2 when Curve was on; null or
-   * empty otherwise.
+   * The curved mesh: vtkLabelMesher's output port 2 when Curve was on (cubic
+   * Bezier triangles: the curve report) or Order was 2 (quadratic tetrahedra:
+   * the mesh report's `quadratic` part); null or empty otherwise.
    */
   void SetCurvedMesh(vtkUnstructuredGrid* curved);
 
@@ -108,7 +109,8 @@ public:
    */
   std::string GetCurveJSON();
   /**
-   * The curve report with a curved mesh, the mesh report otherwise.
+   * The curve report with a Bezier mesh, the mesh report otherwise (with a
+   * quadratic mesh, its `quadratic` object included).
    */
   std::string GetJSON();
   /**
@@ -121,7 +123,9 @@ public:
    * measured: the angle bound, both distances certified, no inverted cell,
    * the topology of every material; with a curved mesh also every curved cell
    * proven valid with its certified scaled Jacobian at least the bound asked
-   * for, and the curves within the bounds with the topology kept.
+   * for, and the curves within the bounds with the topology kept; with a
+   * quadratic mesh, its certified smallest scaled Jacobian at least the bound
+   * (and, where measured, the sampled one and both distances within their bounds).
    */
   bool GetGuaranteesHold();
 

@@ -2,7 +2,7 @@
 // vtkLabelMeshReport: the one report of a vtkLabelMesher run (the CLI's JSON and summary, the
 // viewer's, the Slicer module's) states what the outputs' field data record: the parameters, the
 // material table, the decimation, the measured guarantees and, with a curved mesh, its validity and
-// curves. Its verdict GetGuaranteesHold turns false when any one measured guarantee is broken (each
+// curves, or a quadratic mesh's part. Its verdict GetGuaranteesHold turns false when any one measured guarantee is broken (each
 // spoiled in turn), and without measurements. (The CLI's JSON is compared with Python's in
 // Testing/Python/test_labelmesher_io.py; the Slicer module reads it in Testing/Slicer.)
 #include "vtkLabelMeshReport.h"
@@ -159,6 +159,47 @@ TEST(vtkLabelMeshReport, ACurvedMeshGivesTheCurveReport)
   ASSERT_TRUE(report->GetGuaranteesHold());
   curved->GetFieldData()->RemoveArray(arrays::InvalidCells);
   EXPECT_FALSE(report->GetGuaranteesHold()) << "validity not recorded is not validity";
+}
+
+TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
+{
+  vtkSmartPointer<vtkImageData> image = NamedBall();
+  vtkNew<vtkLabelMesher> mesher;
+  mesher->SetInputData(image);
+  mesher->SetOrder(2);
+  mesher->Update();
+  vtkNew<vtkUnstructuredGrid> quadratic;
+  quadratic->DeepCopy(mesher->GetOutput(2));
+  ASSERT_GT(quadratic->GetNumberOfCells(), 0);
+  vtkNew<vtkLabelMeshReport> report;
+  report->SetImage(image);
+  report->SetMesh(mesher->GetOutput());
+  report->SetCurvedMesh(quadratic);
+  const std::string json = report->GetJSON();
+  EXPECT_EQ(json, report->GetMeshJSON()) << "a quadratic mesh has no curve report";
+  EXPECT_EQ(report->GetCurveJSON(), "");
+  for (const std::string& part : { std::string("\"quadratic\": {"),
+         std::string("\"cells\": " + std::to_string(quadratic->GetNumberOfCells())),
+         std::string("\"scaled_jacobian_bound\": 0.1"), std::string("\"guarantees_hold\": true") })
+  {
+    EXPECT_TRUE(Contains(json, part)) << part << "\n" << json;
+  }
+  EXPECT_TRUE(Contains(report->GetSummary(), "quadratic")) << report->GetSummary();
+  EXPECT_TRUE(report->GetGuaranteesHold());
+  // Each measured quadratic guarantee, broken in turn, fails the verdict.
+  const double sampled = quadratic->GetFieldData()->GetArray(arrays::SampledMinimumScaledJacobian)->GetComponent(0, 0);
+  const double certified = quadratic->GetFieldData()->GetArray(arrays::CertifiedMinimumScaledJacobian)->GetComponent(0, 0);
+  const double distance = quadratic->GetFieldData()->GetArray(arrays::MeasuredImageToMeshDistance)->GetComponent(0, 0);
+  for (const auto& c : { std::make_pair(arrays::CertifiedMinimumScaledJacobian, 0.05),
+         std::make_pair(arrays::SampledMinimumScaledJacobian, 0.05), std::make_pair(arrays::MeasuredImageToMeshDistance, 2.5) })
+  {
+    Spoil(quadratic, c.first, c.second);
+    EXPECT_FALSE(report->GetGuaranteesHold()) << c.first;
+    Spoil(quadratic, arrays::CertifiedMinimumScaledJacobian, certified);
+    Spoil(quadratic, arrays::SampledMinimumScaledJacobian, sampled);
+    Spoil(quadratic, arrays::MeasuredImageToMeshDistance, distance);
+    ASSERT_TRUE(report->GetGuaranteesHold()) << c.first << " restored";
+  }
 }
 
 TEST(vtkLabelMeshReport, WithoutAMeshItSaysSoOnce)

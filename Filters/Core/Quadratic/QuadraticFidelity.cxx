@@ -242,6 +242,13 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
 
   // Image to mesh: voxel faces of m near a curved face of m, against m's faces within reach.
   const double h = bounds.ImageToMesh;
+  std::vector<std::array<Point3, 2>> hullBox(faces.size()); // low and high corners
+  for (std::size_t f = 0; f < faces.size(); ++f)
+  {
+    hullBox[f] = { hull[f][0], hull[f][0] };
+    for (const Point3& p : hull[f])
+      hullBox[f] = { Min(hullBox[f][0], p), Max(hullBox[f][1], p) };
+  }
   BoxBins3 bins(4.0);
   for (std::size_t f = 0; f < faces.size(); ++f)
   {
@@ -318,7 +325,11 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       };
       for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
       {
-        if (!bounds_(faces[g], m))
+        // A face lies in the hull of its control points, its straight form too (the corners are
+        // control points): a face whose hull's box is out of reach cannot certify the voxel face
+        // curved or straight, so it is neither tested nor blamed (and when every curved face is out
+        // of reach, the pieces within reach are the linear mesh's, as the decimator certified).
+        if (!bounds_(faces[g], m) || SquaredDistanceToBox(centre, hullBox[g][0], hullBox[g][1]) > reach)
           continue;
         if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
         {

@@ -6,8 +6,9 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <Eigen/IterativeLinearSolvers>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -56,16 +57,23 @@ bool Stiffness(const Point3 x[4], double nu, Eigen::Matrix<double, 12, 12>& k)
   return true;
 }
 
+/// Conjugate gradients stop at this residual, relative to the right-hand side's norm.
+constexpr double kRelativeResidual = 1e-8;
+
 } // namespace
 
-/// The factorised system: K_ff u_f = -K_fp u_p over the moving edges' control points (3 dofs
-/// each), K_fp over the bounding edges' ones.
+/// The system K_ff u_f = -K_fp u_p over the moving edges' control points (3 dofs each), K_fp
+/// over the bounding edges' ones, solved by conjugate gradients (Jacobi preconditioner) from the
+/// last solution. A sparse Cholesky factor grows faster than the mesh (digimouse: 2 GB and
+/// minutes per factorisation); the iteration needs only K, and the answer need not be exact:
+/// every cell is certified afterwards, wherever its mid-nodes are.
 struct InteriorUntangler::System
 {
   std::vector<int> Unknown;                 ///< per edge: its index among the moving ones, or -1
   std::vector<int> Prescribed;              ///< per edge: its index among the bounding ones next to them, or -1
+  Eigen::SparseMatrix<double> Matrix;       ///< K_ff, both triangles
   Eigen::SparseMatrix<double> Coupling;     ///< K_fp
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> Solver;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> Solver;
   bool Ok = false;
 };
 
@@ -74,6 +82,7 @@ InteriorUntangler::InteriorUntangler(const QuadraticMesh& mesh, const std::vecto
   , Free(free)
   , PoissonRatio(poissonRatio)
   , Moving(mesh.Edges.size(), 0)
+  , Displacement(mesh.Edges.size(), Point3{ 0.0, 0.0, 0.0 })
 {
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
@@ -120,8 +129,7 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
     for (std::size_t e = 0; e < edges; ++e)
       if (Moving[e])
         s.Unknown[e] = unknowns++;
-    // The bounding edges of cells with a moving edge are the prescribed columns (numbered first,
-    // so that the matrices can be assembled in batches).
+    // The bounding edges of cells with a moving edge are the prescribed columns.
     auto touches = [&](std::size_t c) {
       for (int e = 0; e < 6; ++e)
         if (s.Unknown[static_cast<std::size_t>(Mesh.CellEdges[c * 6 + e])] >= 0)
@@ -136,23 +144,58 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
           if (!Free[edge] && s.Prescribed[edge] < 0)
             s.Prescribed[edge] = prescribed++;
         }
-    Eigen::SparseMatrix<double> matrix(3 * unknowns, 3 * unknowns);
-    s.Coupling.resize(3 * unknowns, 3 * prescribed);
-    // Triplets in batches of about a million: all of them at once took 0.5 GB on totalseg.
-    std::vector<Eigen::Triplet<double>> kff, kfp;
-    auto flush = [&]() {
-      Eigen::SparseMatrix<double> part(matrix.rows(), matrix.cols()), coupling(s.Coupling.rows(), s.Coupling.cols());
-      part.setFromTriplets(kff.begin(), kff.end());
-      coupling.setFromTriplets(kfp.begin(), kfp.end());
-      matrix += part;
-      s.Coupling += coupling;
-      kff.clear();
-      kfp.clear();
+    // Both matrices get their pattern first (the edges of each touching cell couple), then the
+    // stiffness is added in place: no triplet lists (all at once took 0.5 GB on totalseg) and no
+    // repeated sums of partial matrices (quadratic in the mesh: minutes on digimouse).
+    std::vector<std::vector<int>> rowsOfUnknown(static_cast<std::size_t>(unknowns)),
+      rowsOfPrescribed(static_cast<std::size_t>(prescribed));
+    auto addOnce = [](std::vector<int>& list, int value) {
+      if (std::find(list.begin(), list.end(), value) == list.end())
+        list.push_back(value);
     };
     for (std::size_t c = 0; c < Mesh.NumberOfCells(); ++c)
     {
-      if (kff.size() + kfp.size() > (1u << 20))
-        flush();
+      if (!touches(c))
+        continue;
+      for (int a = 0; a < 6; ++a)
+      {
+        const int ua = s.Unknown[static_cast<std::size_t>(Mesh.CellEdges[c * 6 + a])];
+        if (ua < 0)
+          continue;
+        for (int b = 0; b < 6; ++b)
+        {
+          const auto eb = static_cast<std::size_t>(Mesh.CellEdges[c * 6 + b]);
+          if (s.Unknown[eb] >= 0)
+            addOnce(rowsOfUnknown[static_cast<std::size_t>(s.Unknown[eb])], ua);
+          else if (s.Prescribed[eb] >= 0)
+            addOnce(rowsOfPrescribed[static_cast<std::size_t>(s.Prescribed[eb])], ua);
+        }
+      }
+    }
+    // Column 3 b + j holds rows 3 a + i for the edges a coupled to b, in order.
+    auto withPattern = [](Eigen::SparseMatrix<double>& m, std::vector<std::vector<int>>& rowsOf) {
+      Eigen::VectorXi sizes(m.cols());
+      for (std::size_t b = 0; b < rowsOf.size(); ++b)
+        for (int j = 0; j < 3; ++j)
+          sizes[static_cast<Eigen::Index>(3 * b + static_cast<std::size_t>(j))] = static_cast<int>(3 * rowsOf[b].size());
+      m.reserve(sizes);
+      for (std::size_t b = 0; b < rowsOf.size(); ++b)
+      {
+        std::sort(rowsOf[b].begin(), rowsOf[b].end());
+        for (int j = 0; j < 3; ++j)
+          for (int a : rowsOf[b])
+            for (int i = 0; i < 3; ++i)
+              m.insert(3 * a + i, static_cast<Eigen::Index>(3 * b) + j) = 0.0;
+        std::vector<int>().swap(rowsOf[b]);
+      }
+      m.makeCompressed();
+    };
+    Eigen::SparseMatrix<double> matrix(3 * unknowns, 3 * unknowns);
+    s.Coupling.resize(3 * unknowns, 3 * prescribed);
+    withPattern(matrix, rowsOfUnknown);
+    withPattern(s.Coupling, rowsOfPrescribed);
+    for (std::size_t c = 0; c < Mesh.NumberOfCells(); ++c)
+    {
       if (!touches(c))
         continue;
       std::int64_t node[10]; // -1 for corners (fixed), else the edge
@@ -187,23 +230,20 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
             const int ub = s.Unknown[edge];
             if (ub < 0 && Free[edge])
               continue; // a free edge that does not move: straight
+            Eigen::SparseMatrix<double>& target = ub >= 0 ? matrix : s.Coupling;
+            const int column = ub >= 0 ? ub : s.Prescribed[edge];
             for (int i = 0; i < 3; ++i)
               for (int j = 0; j < 3; ++j)
-              {
-                const double kij = k(3 * a + i, 3 * b + j);
-                if (ub >= 0)
-                  kff.emplace_back(3 * ua + i, 3 * ub + j, kij);
-                else
-                  kfp.emplace_back(3 * ua + i, 3 * s.Prescribed[edge] + j, kij);
-              }
+                target.coeffRef(3 * ua + i, 3 * column + j) += k(3 * a + i, 3 * b + j);
           }
         }
       }
     }
-    flush();
+    s.Matrix = std::move(matrix);
     if (unknowns > 0)
     {
-      s.Solver.compute(matrix);
+      s.Solver.setTolerance(kRelativeResidual);
+      s.Solver.compute(s.Matrix);
       s.Ok = s.Solver.info() == Eigen::Success;
     }
   }
@@ -216,7 +256,12 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
     if (s.Prescribed[e] >= 0 && mesh.Curved(e))
       for (int j = 0; j < 3; ++j)
         up[3 * s.Prescribed[e] + j] = 2.0 * mesh.Scales[e] * mesh.Offset[e][j];
-  const Eigen::VectorXd u = s.Solver.solve(-(s.Coupling * up));
+  Eigen::VectorXd guess(s.Matrix.rows());
+  for (std::size_t e = 0; e < edges; ++e)
+    if (s.Unknown[e] >= 0)
+      for (int j = 0; j < 3; ++j)
+        guess[3 * s.Unknown[e] + j] = Displacement[e][j];
+  const Eigen::VectorXd u = s.Solver.solveWithGuess(-(s.Coupling * up), guess);
   std::size_t moved = 0;
   for (std::size_t e = 0; e < edges; ++e)
   {
@@ -224,7 +269,10 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
     if (k < 0)
       continue;
     const Point3 d{ u[3 * k], u[3 * k + 1], u[3 * k + 2] };
-    if (!std::isfinite(d[0] + d[1] + d[2]) || Norm(d) < 1e-9)
+    if (!std::isfinite(d[0] + d[1] + d[2]))
+      continue;
+    Displacement[e] = d;
+    if (Norm(d) < 1e-9)
       continue;
     mesh.Offset[e] = Scale(d, 0.5); // the mid-node moves half its control point's displacement
     mesh.Scales[e] = 1.0;

@@ -17,8 +17,8 @@
  *
  * Only free edges near a fitted interface edge (sharing a cell with one)
  * move: the displacement decays away from the curves, and the system stays
- * small. The system is factorised once (sparse Cholesky) and solved again
- * for each new set of curves; it changes only when edges are pinned.
+ * small. It is assembled once and solved again for each new set of curves,
+ * starting from the last solution; it changes only when edges are pinned.
  */
 
 #include "Quadratic/QuadraticMesh.h"
@@ -44,7 +44,7 @@ public:
   /// current mid-nodes (the other free edges straight). Returns the edges
   /// moved.
   std::size_t Solve(QuadraticMesh& mesh);
-  /// Holds edge e straight from now on (refactorises at the next Solve).
+  /// Holds edge e straight from now on (the system is assembled again at the next Solve).
   void Pin(std::size_t e);
 
 private:
@@ -53,6 +53,7 @@ private:
   std::vector<char> Free;
   double PoissonRatio;
   std::vector<char> Moving;
+  std::vector<Point3> Displacement; ///< per edge: its control point's displacement last solved (the next guess)
   std::unique_ptr<System> Factored;
 };
 

@@ -218,7 +218,7 @@ const std::vector<Option>& Options()
       "mesh: element order; 2 also makes quadratic tetrahedra\n"
       "fitted to the image (3D, decimated): certified valid,\n"
       "--min-scaled-jacobian, both distance bounds; written as\n"
-      ".vtu .vtk .msh .inp                         [default 1]",
+      ".vtu .vtk .msh .inp .mesh                   [default 1]",
       [](Reading& r, const std::string& v) {
         r.Args.Settings.Order = ParseCount("--order", v, 1);
         if (r.Args.Settings.Order > 2)
@@ -473,8 +473,8 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     if (args.Settings.Order == 2 && !labelmesher::io::HoldsQuadraticCells(*format))
     {
-      throw UsageError("output '" + output + "': quadratic tetrahedra can be written as .vtu, .vtk, .msh or .inp "
-                       "only");
+      throw UsageError("output '" + output + "': quadratic tetrahedra can be written as .vtu, .vtk, .msh, .inp or "
+                       ".mesh only");
     }
     if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=
       args.Outputs.begin() + static_cast<std::ptrdiff_t>(i))

@@ -31,9 +31,6 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
 {
   if (mesh.Order == 3)
     throw WriteError("Medit .mesh has no cubic triangle: write the curved mesh as .msh, .vtu or .vtk");
-  if (mesh.Order == 2)
-    throw WriteError("Medit .mesh: the node order of TetrahedraP2 could not be checked against a reader here; "
-                     "write the quadratic mesh as .msh, .inp, .vtu or .vtk");
   TextOut text(out);
   const bool planar = mesh.Dimension == 2 && mesh.FlatAxis >= 0;
   const std::vector<std::size_t> axes = WrittenAxes(mesh);
@@ -61,10 +58,15 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
   }
 
   const auto nodes = static_cast<std::size_t>(mesh.NodesPerCell());
-  text.Text(mesh.Dimension == 3 ? "Tetrahedra\n" : "Triangles\n").Int(static_cast<std::int64_t>(mesh.NumberOfCells())).Char('\n');
+  // Quadratic tetrahedra: TetrahedraP2, whose default node order (no TetrahedraP2Ordering
+  // keyword) is VTK's: corners, then the mid-nodes of edges 01, 12, 20, 03, 13, 23 (libMeshb's
+  // example test_libmeshb_HO.c, Gmsh's MElement::writeMESH and its reader, which swap its own
+  // last two edges to it; CLI.export_quadratic reads our file back through Gmsh).
+  const char* keyword = mesh.Order == 2 ? "TetrahedraP2\n" : mesh.Dimension == 3 ? "Tetrahedra\n" : "Triangles\n";
+  text.Text(keyword).Int(static_cast<std::int64_t>(mesh.NumberOfCells())).Char('\n');
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
-    std::array<std::int64_t, 4> cell{};
+    std::array<std::int64_t, 10> cell{};
     std::copy_n(mesh.Cells.begin() + static_cast<std::ptrdiff_t>(c * nodes), nodes, cell.begin());
     if (planar && PlanarArea(mesh, cell.data()) < 0.0)
     {

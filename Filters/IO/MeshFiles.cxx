@@ -106,7 +106,7 @@ bool HoldsCurvedCells(MeshFormat format)
 
 bool HoldsQuadraticCells(MeshFormat format)
 {
-  return HoldsCurvedCells(format) || format == MeshFormat::Abaqus;
+  return HoldsCurvedCells(format) || format == MeshFormat::Abaqus || format == MeshFormat::Medit;
 }
 
 MeshFileWriter::MeshFileWriter(

@@ -58,8 +58,8 @@ std::string KnownExtensions();
 /// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);
 /// Formats that hold quadratic tetrahedra (VTK_QUADRATIC_TETRA): .vtu, .vtk, .msh (10-node),
-/// .inp (C3D10). Not .mesh: the node order of Medit's TetrahedraP2 could not be checked here (no
-/// reader of it in Debian's meshio).
+/// .inp (C3D10), .mesh (Medit's TetrahedraP2, in VTK's node order; Debian's meshio cannot read
+/// it, Gmsh can: CLI.export_quadratic).
 bool HoldsQuadraticCells(MeshFormat format);
 
 struct WriteOptions

@@ -170,15 +170,16 @@ def case_export_curved_msh():
 def case_export_quadratic():
     """`mesh --order 2` writes quadratic tetrahedra: .vtu, .msh (Gmsh's 10-node tetrahedra, its own
     node order), .inp (C3D10) read back by meshio as the same cells on the same nodes with every
-    material; det J positive and the scaled Jacobian at least 0.1 from the written nodes; gmsh
-    -check accepts the .msh; the report's certified figures and fewer misclassified voxels."""
+    material, .mesh (Medit's TetrahedraP2) read by Gmsh into the same; det J positive and the
+    scaled Jacobian at least 0.1 from the written nodes; gmsh -check accepts the .msh; the report's
+    certified figures and fewer misclassified voxels."""
     labels = np.zeros((18, 20, 22), dtype=np.uint8)
     z, y, x = np.mgrid[0:18, 0:20, 0:22]
     labels[(x - 8.5) ** 2 + (y - 9.5) ** 2 + (z - 8.5) ** 2 <= 36] = 2
     labels[(x - 15.0) ** 2 + (y - 10.0) ** 2 + (z - 9.0) ** 2 <= 16] = 5
     image = cli.write_nrrd("quadratic.nrrd", labels, "uchar", spacing=(0.5, 0.5, 0.5))
-    vtu, msh, inp, report = (cli.path("quadratic." + e) for e in ("vtu", "msh", "inp", "json"))
-    result = cli.run("mesh", image, "--order", "2", "-o", vtu, "-o", msh, "-o", inp, "--report", report)
+    vtu, msh, inp, medit, report = (cli.path("quadratic." + e) for e in ("vtu", "msh", "inp", "mesh", "json"))
+    result = cli.run("mesh", image, "--order", "2", "-o", vtu, "-o", msh, "-o", inp, "-o", medit, "--report", report)
     assert result.returncode == 0, result.stderr
     meshio = __import__("meshio")
     meshes = {f: meshio.read(f) for f in (vtu, msh, inp)}
@@ -213,9 +214,20 @@ def case_export_quadratic():
     assert shutil.which("gmsh"), "gmsh is not installed (python3-meshio and gmsh are test dependencies)"
     check = subprocess.run(["gmsh", msh, "-check"], capture_output=True, text=True)
     assert check.returncode == 0 and "Error" not in check.stdout + check.stderr, (check.stdout + check.stderr)[-500:]
+    # Medit's TetrahedraP2: Debian's meshio cannot read it, so Gmsh reads it (its reader knows the
+    # format's node order, which differs from its own) and writes it as .msh, which meshio reads
+    # into VTK's order: the same cells, each with its material as Gmsh's elementary tag.
+    converted = cli.path("quadratic_from_medit.msh")
+    convert = subprocess.run(["gmsh", medit, "-0", "-o", converted, "-format", "msh22"], capture_output=True, text=True)
+    assert convert.returncode == 0 and "Error" not in convert.stdout + convert.stderr, convert.stdout[-500:]
+    from_medit = meshio.read(converted)
+    assert keyed(from_medit) == want, ".mesh has other cells or another node order"
+    elementary = np.concatenate([from_medit.cell_data["gmsh:geometrical"][i] for i, c in enumerate(from_medit.cells)
+                                 if c.type == "tetra10"]).astype(np.int64)
+    assert sorted(elementary.tolist()) == sorted(materials.tolist()), "materials differ in the .mesh"
     # Formats without quadratic tetrahedra, and bad requests, are refused before meshing.
-    cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.mesh")), ".msh or .inp only", 2)
-    cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.stl")), ".msh or .inp only", 2)
+    cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.stl")), ".inp or .mesh only", 2)
+    cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.vtp")), ".inp or .mesh only", 2)
     cli.expect_failure(cli.run("mesh", image, "--order", "3", "-o", vtu), "1 (linear) or 2", 2)
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "--no-decimate", "-o", vtu), "--no-decimate", 2)
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "--smoothness", "2", "-o", vtu), "'curve' only", 2)

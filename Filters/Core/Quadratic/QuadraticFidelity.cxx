@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace labelmesher
 {
@@ -180,8 +181,13 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
   auto retest = [&](std::size_t f) { return !changed || (*changed)[f]; };
   const double T = bounds.Tolerance;
   std::vector<char> failing(faces.size(), 0);
-  std::vector<std::vector<std::array<Point3, 3>>> flattened(faces.size()); // curved faces' sub-triangles
+  // Curved faces' flattening levels (-1: none within 4^5); the sub-triangles are made where they
+  // are used, never all at once (they took 0.7 GB on digimouse).
+  std::vector<signed char> level(faces.size(), -1);
   std::vector<std::array<Point3, 6>> nodes(faces.size()), hull(faces.size());
+  auto flatten = [&](std::size_t f) {
+    return level[f] < 0 ? std::vector<std::array<Point3, 3>>{} : FlattenFace(nodes[f], level[f]);
+  };
   std::vector<std::size_t> curved;
   for (std::size_t f = 0; f < faces.size(); ++f)
   {
@@ -190,13 +196,13 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
     if (!FaceIsCurved(mesh, faces[f]))
       continue;
     curved.push_back(f);
-    const int level = FlatteningLevel(nodes[f], T);
-    if (level < 0 || bounds.MeshToImage < T || bounds.ImageToMesh < T)
+    const int needed = FlatteningLevel(nodes[f], T);
+    if (needed < 0 || bounds.MeshToImage < T || bounds.ImageToMesh < T)
     {
       failing[f] = 1;
       continue;
     }
-    flattened[f] = FlattenFace(nodes[f], level);
+    level[f] = static_cast<signed char>(needed);
   }
 
   // Mesh to image: each sub-triangle near the image boundary of each non-zero material beside it.
@@ -208,6 +214,7 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
     const std::size_t f = curved[index];
     if (failing[f] || !retest(f))
       continue;
+    const std::vector<std::array<Point3, 3>> flattened = flatten(f);
     for (std::int32_t m : { faces[f].Below, faces[f].Above })
     {
       if (m == 0 || failing[f])
@@ -216,7 +223,7 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       ForEachBoundaryFace(image, VoxelsNear(hull[f], meshReach + 1.0, image), m,
         [&](int i, int j, int k, int axis) { targets.push_back(VoxelFace(i, j, k, axis)); });
       std::vector<ConvexPiece> near;
-      for (const std::array<Point3, 3>& triangle : flattened[f])
+      for (const std::array<Point3, 3>& triangle : flattened)
       {
         const ConvexPiece t = Triangle(triangle);
         // Only voxel faces within reach of the sub-triangle (its points are within `radius` of
@@ -272,92 +279,103 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
         materials.push_back(m);
   std::sort(materials.begin(), materials.end());
   materials.erase(std::unique(materials.begin(), materials.end()), materials.end());
-  // The voxel faces to test, each once per material: those near a changed face (curved, or
+  // Per material, the voxel faces to test, each once: those near a changed face (curved, or
   // straight again: its curve may have covered them, hence near any shape it has had: its
-  // full-scale hull).
-  struct VoxelFaceOf
-  {
-    std::int32_t Material;
-    long long Key; ///< voxel (i + 1, j + 1, k + 1) and axis, packed
-  };
+  // full-scale hull). Keys pack voxel (i + 1, j + 1, k + 1) and the axis; the list is made unique
+  // whenever it has grown (neighbouring faces' boxes overlap), so it stays near its final size.
   const long long nx = image.Dimensions[0] + 2, ny = image.Dimensions[1] + 2;
-  std::vector<VoxelFaceOf> voxelFaces;
+  std::vector<std::vector<std::size_t>> blamed(MaxThreads());
+  std::vector<long long> voxelFaces;
+  auto makeUnique = [&voxelFaces]() {
+    std::sort(voxelFaces.begin(), voxelFaces.end());
+    voxelFaces.erase(std::unique(voxelFaces.begin(), voxelFaces.end()), voxelFaces.end());
+  };
   for (std::int32_t m : materials)
   {
-    const std::size_t first = voxelFaces.size();
+    voxelFaces.clear();
+    std::size_t unique = 0;
     for (std::size_t f = 0; f < faces.size(); ++f)
     {
       if (!bounds_(faces[f], m) || !(changed ? (*changed)[f] : FaceIsCurved(mesh, faces[f])))
         continue;
       ForEachBoundaryFace(image, VoxelsNear(FullScaleControlPoints(mesh, faces[f]), h + 1.0, image), m,
-        [&](int i, int j, int k, int axis) {
-        voxelFaces.push_back({ m, (((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis });
-      });
-    }
-    auto byKey = [](const VoxelFaceOf& a, const VoxelFaceOf& b) { return a.Key < b.Key; };
-    auto sameKey = [](const VoxelFaceOf& a, const VoxelFaceOf& b) { return a.Key == b.Key; };
-    std::sort(voxelFaces.begin() + static_cast<std::ptrdiff_t>(first), voxelFaces.end(), byKey);
-    voxelFaces.erase(std::unique(voxelFaces.begin() + static_cast<std::ptrdiff_t>(first), voxelFaces.end(), sameKey),
-      voxelFaces.end());
-  }
-  // Each voxel face against m's faces within reach; independent, so both cores take them, and
-  // each thread lists the curved faces to blame (flags: the order does not matter).
-  std::vector<std::vector<std::size_t>> blamed(MaxThreads());
-  ParallelChunks(voxelFaces.size(), 256, [&](unsigned thread, std::size_t begin, std::size_t end) {
-    std::vector<ConvexPiece> straight, all;
-    std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
-    for (std::size_t index = begin; index < end; ++index)
-    {
-      const std::int32_t m = voxelFaces[index].Material;
-      long long key = voxelFaces[index].Key;
-      const int axis = static_cast<int>(key % 3);
-      key /= 3;
-      const int i = static_cast<int>(key % nx) - 1, j = static_cast<int>((key / nx) % ny) - 1,
-                k = static_cast<int>(key / (nx * ny)) - 1;
-      const ConvexPiece voxel = VoxelFace(i, j, k, axis);
-      const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
-      straight.clear(), all.clear(), near.clear();
-      // Only pieces within h of some point of the voxel face can certify it (its points are
-      // within sqrt(1/2) of its centre): the others are left out of the exact test.
-      const double reach = (h + 0.7072) * (h + 0.7072);
-      auto inReach = [&](const ConvexPiece& t) {
-        return SquaredDistanceToTriangle(centre, t.Points[0], t.Points[1], t.Points[2]) <= reach;
-      };
-      for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
+        [&](int i, int j, int k, int axis) { voxelFaces.push_back((((k + 1) * ny + (j + 1)) * nx + (i + 1)) * 3 + axis); });
+      if (voxelFaces.size() > 2 * unique + (1u << 20))
       {
-        // A face lies in the hull of its control points, its straight form too (the corners are
-        // control points): a face whose hull's box is out of reach cannot certify the voxel face
-        // curved or straight, so it is neither tested nor blamed (and when every curved face is out
-        // of reach, the pieces within reach are the linear mesh's, as the decimator certified).
-        if (!bounds_(faces[g], m) || SquaredDistanceToBox(centre, hullBox[g][0], hullBox[g][1]) > reach)
-          continue;
-        if (flattened[g].empty() && !FaceIsCurved(mesh, faces[g]))
+        makeUnique();
+        unique = voxelFaces.size();
+      }
+    }
+    makeUnique();
+    // Each voxel face against m's faces within reach; independent, so both cores take them, and
+    // each thread lists the curved faces to blame (flags: the order does not matter).
+    ParallelChunks(voxelFaces.size(), 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
+      std::vector<ConvexPiece> straight, all;
+      std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
+      // Consecutive voxel faces are neighbours (sorted by position): the faces near them repeat.
+      std::unordered_map<std::size_t, std::vector<std::array<Point3, 3>>> flattened;
+      auto flattening = [&](std::size_t g) -> const std::vector<std::array<Point3, 3>>& {
+        auto known = flattened.find(g);
+        if (known == flattened.end())
         {
-          const ConvexPiece t = Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] });
-          if (inReach(t))
-            straight.push_back(t), all.push_back(t);
+          if (flattened.size() >= 4096)
+            flattened.clear();
+          known = flattened.emplace(g, flatten(g)).first;
         }
-        else
+        return known->second;
+      };
+      for (std::size_t index = begin; index < end; ++index)
+      {
+        long long key = voxelFaces[index];
+        const int axis = static_cast<int>(key % 3);
+        key /= 3;
+        const int i = static_cast<int>(key % nx) - 1, j = static_cast<int>((key / nx) % ny) - 1,
+                  k = static_cast<int>(key / (nx * ny)) - 1;
+        const ConvexPiece voxel = VoxelFace(i, j, k, axis);
+        const Point3 centre = Scale(Add(voxel.Points[0], voxel.Points[2]), 0.5);
+        straight.clear(), all.clear(), near.clear();
+        // Only pieces within h of some point of the voxel face can certify it (its points are
+        // within sqrt(1/2) of its centre): the others are left out of the exact test.
+        const double reach = (h + 0.7072) * (h + 0.7072);
+        auto inReach = [&](const ConvexPiece& t) {
+          return SquaredDistanceToTriangle(centre, t.Points[0], t.Points[1], t.Points[2]) <= reach;
+        };
+        for (std::size_t g : bins.At({ centre[0], centre[1], centre[2] }))
         {
-          near.push_back(g);
-          for (const std::array<Point3, 3>& triangle : flattened[g])
+          // A face lies in the hull of its control points, its straight form too (the corners are
+          // control points): a face whose hull's box is out of reach cannot certify the voxel face
+          // curved or straight, so it is neither tested nor blamed (and when every curved face is out
+          // of reach, the pieces within reach are the linear mesh's, as the decimator certified).
+          if (!bounds_(faces[g], m) || SquaredDistanceToBox(centre, hullBox[g][0], hullBox[g][1]) > reach)
+            continue;
+          if (!FaceIsCurved(mesh, faces[g]))
           {
-            const ConvexPiece t = Triangle(triangle);
+            const ConvexPiece t = Triangle({ nodes[g][0], nodes[g][1], nodes[g][2] });
             if (inReach(t))
-              all.push_back(t);
+              straight.push_back(t), all.push_back(t);
+          }
+          else
+          {
+            near.push_back(g);
+            for (const std::array<Point3, 3>& triangle : flattening(g))
+            {
+              const ConvexPiece t = Triangle(triangle);
+              if (inReach(t))
+                all.push_back(t);
+            }
           }
         }
+        if (near.empty())
+          continue; // the linear mesh's own boundary here: certified by the decimator
+        if (WithinDistance(voxel, straight, h) || WithinDistance(voxel, all, h - T))
+          continue;
+        blamed[thread].insert(blamed[thread].end(), near.begin(), near.end());
       }
-      if (near.empty())
-        continue; // the linear mesh's own boundary here: certified by the decimator
-      if (WithinDistance(voxel, straight, h) || WithinDistance(voxel, all, h - T))
-        continue;
-      blamed[thread].insert(blamed[thread].end(), near.begin(), near.end());
-    }
-  });
-  for (const std::vector<std::size_t>& list : blamed)
-    for (std::size_t g : list)
-      failing[g] = 1;
+    });
+    for (const std::vector<std::size_t>& list : blamed)
+      for (std::size_t g : list)
+        failing[g] = 1;
+  }
   std::vector<std::size_t> out;
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (failing[f])

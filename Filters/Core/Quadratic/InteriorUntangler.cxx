@@ -71,9 +71,9 @@ struct InteriorUntangler::System
 {
   std::vector<int> Unknown;                 ///< per edge: its index among the moving ones, or -1
   std::vector<int> Prescribed;              ///< per edge: its index among the bounding ones next to them, or -1
-  Eigen::SparseMatrix<double> Matrix;       ///< K_ff, both triangles
+  Eigen::SparseMatrix<double> Matrix;       ///< K_ff, its upper triangle (it is symmetric)
   Eigen::SparseMatrix<double> Coupling;     ///< K_fp
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> Solver;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Upper> Solver;
   bool Ok = false;
 };
 
@@ -165,7 +165,7 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
         for (int b = 0; b < 6; ++b)
         {
           const auto eb = static_cast<std::size_t>(Mesh.CellEdges[c * 6 + b]);
-          if (s.Unknown[eb] >= 0)
+          if (s.Unknown[eb] >= 0 && ua <= s.Unknown[eb]) // K_ff's upper triangle
             addOnce(rowsOfUnknown[static_cast<std::size_t>(s.Unknown[eb])], ua);
           else if (s.Prescribed[eb] >= 0)
             addOnce(rowsOfPrescribed[static_cast<std::size_t>(s.Prescribed[eb])], ua);
@@ -234,7 +234,8 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
             const int column = ub >= 0 ? ub : s.Prescribed[edge];
             for (int i = 0; i < 3; ++i)
               for (int j = 0; j < 3; ++j)
-                target.coeffRef(3 * ua + i, 3 * column + j) += k(3 * a + i, 3 * b + j);
+                if (ub < 0 || 3 * ua + i <= 3 * ub + j) // K_ff: its upper triangle only
+                  target.coeffRef(3 * ua + i, 3 * column + j) += k(3 * a + i, 3 * b + j);
           }
         }
       }

@@ -45,6 +45,27 @@ void AddCubicCurve(vtkPoints* input, const vtkIdType ids[4], int segments, vtkPo
     lines->InsertCellPoint(points->InsertNextPoint(x));
   }
 }
+/// A quadratic edge (VTK_QUADRATIC_EDGE: ends 0 and 1, mid-node 2) sampled along its parabola.
+void AddQuadraticCurve(vtkPoints* input, const vtkIdType ids[3], int segments, vtkPoints* points, vtkCellArray* lines)
+{
+  double p[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    input->GetPoint(ids[k], p[k]);
+  }
+  lines->InsertNextCell(segments + 1);
+  for (int s = 0; s <= segments; ++s)
+  {
+    const double t = static_cast<double>(s) / segments;
+    const double b[3] = { (1.0 - t) * (1.0 - 2.0 * t), t * (2.0 * t - 1.0), 4.0 * t * (1.0 - t) };
+    double x[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      x[a] = b[0] * p[0][a] + b[1] * p[1][a] + b[2] * p[2][a];
+    }
+    lines->InsertCellPoint(points->InsertNextPoint(x));
+  }
+}
 } // namespace
 
 vtkSmartPointer<vtkPolyData> CurvedCellEdges(vtkUnstructuredGrid* mesh, int segments)
@@ -74,7 +95,17 @@ vtkSmartPointer<vtkPolyData> CurvedCellEdges(vtkUnstructuredGrid* mesh, int segm
     vtkCell* cell = mesh->GetCell(c);
     for (int e = 0; e < cell->GetNumberOfEdges(); ++e)
     {
-      vtkIdList* ends = cell->GetEdge(e)->GetPointIds();
+      vtkCell* edge = cell->GetEdge(e);
+      vtkIdList* ends = edge->GetPointIds();
+      if (edge->GetCellType() == VTK_QUADRATIC_EDGE && ends->GetNumberOfIds() == 3)
+      {
+        const vtkIdType ids[3] = { ends->GetId(0), ends->GetId(1), ends->GetId(2) };
+        if (firstTime(ids[0], ids[1]))
+        {
+          AddQuadraticCurve(mesh->GetPoints(), ids, segments, points, lines);
+        }
+        continue;
+      }
       if (firstTime(ends->GetId(0), ends->GetId(1)))
       {
         lines->InsertNextCell(2);

@@ -5,8 +5,9 @@
 /**
  * @file CurvedEdges.h
  * The edges of a curved mesh's cells as polylines, for MeshView to draw over
- * the cells: the surface filter subdivides each cubic Bezier triangle into
- * flat pieces, whose own edges would hide the cells' (curved) ones.
+ * the cells: the surface filter subdivides each curved cell (cubic Bezier
+ * triangle, quadratic tetrahedron) into flat pieces, whose own edges would
+ * hide the cells' (curved) ones.
  */
 
 #include "vtkSmartPointer.h"
@@ -20,7 +21,8 @@ namespace widgets
 {
 
 /// Each edge of `mesh`'s cells once: a cubic Bezier triangle's (VTK_BEZIER_TRIANGLE, 10 points)
-/// sampled at `segments` + 1 points along its curve, any other cell's edges straight.
+/// or a quadratic cell's (VTK_QUADRATIC_EDGE edges, e.g. VTK_QUADRATIC_TETRA) sampled at
+/// `segments` + 1 points along its curve, any other cell's edges straight.
 vtkSmartPointer<vtkPolyData> CurvedCellEdges(vtkUnstructuredGrid* mesh, int segments);
 
 /// True when `mesh` holds a cell that is not linear (VTK's IsLinear).

@@ -8,7 +8,8 @@
  * coloured by the cell array Material, edges drawn, and a clipping plane
  * across one axis that shows whole cells (a crinkle cut, so the tetrahedra
  * inside are seen as they are, not sliced). Curved cells (vtkBezierCurver's
- * cubic Bezier triangles) are drawn subdivided, with their curved edges.
+ * cubic Bezier triangles, vtkLabelMesher's quadratic tetrahedra) are drawn
+ * subdivided, with their curved edges.
  */
 
 #include "vtkNew.h"

@@ -126,12 +126,16 @@ ParameterPanel::ParameterPanel(QWidget* parent)
                                       "named. 0: the memory available."));
   form->addRow(tr("Memory limit"), this->MemoryLimitBox);
 
-  this->CurveBox = new QCheckBox(tr("Curve (2D)"), this);
+  this->CurveBox = new QCheckBox(tr("Curve"), this);
   this->CurveBox->setObjectName(QStringLiteral("curve"));
   this->CurveBox->setToolTip(tr("2D images: turn the mesh into cubic Bezier triangles whose interfaces "
                                 "follow the image smoothly. Guarantee: every curved cell valid (Bernstein "
                                 "bound of its Jacobian), both distance bounds, no crossing interfaces, "
-                                "the topology kept. Saved as .vtu, .vtk or .msh only."));
+                                "the topology kept. Saved as .vtu, .vtk or .msh only.\n"
+                                "3D images (decimated): quadratic tetrahedra whose interfaces are fitted to "
+                                "the image. Guarantee: every cell's scaled Jacobian at least 0.1 (Bernstein "
+                                "bound of det J), both distance bounds on the curved interfaces, the "
+                                "topology kept. Saved as .vtu, .vtk, .msh, .inp or .mesh."));
   form->addRow(QString(), this->CurveBox);
 
   this->SmoothnessBox = new QComboBox(this);
@@ -163,6 +167,7 @@ ParameterPanel::ParameterPanel(QWidget* parent)
   connect(this->DecimateBox, &QCheckBox::toggled, this, [this](bool on) {
     this->AngleBox->setEnabled(on);
     this->BlockCellsBox->setEnabled(on);
+    this->enableCurverControls(); // a 3D image is curved from its decimated mesh only
     emit decimateChanged(on);
     emit parametersChanged();
   });
@@ -208,9 +213,10 @@ void ParameterPanel::setImageGeometry(int dimension, double smallestSpacing)
 
 void ParameterPanel::enableCurverControls()
 {
-  this->CurveBox->setEnabled(this->Dimension == 2);
-  this->SmoothnessBox->setEnabled(this->curve());
-  this->TensionBox->setEnabled(this->curve());
+  this->CurveBox->setEnabled(this->Dimension == 2 || this->decimate());
+  // Smoothness and tension shape the 2D curver's cubic curves; quadratic tetrahedra have neither.
+  this->SmoothnessBox->setEnabled(this->Dimension == 2 && this->curve());
+  this->TensionBox->setEnabled(this->Dimension == 2 && this->curve());
 }
 
 double ParameterPanel::displayScale() const
@@ -312,7 +318,7 @@ void ParameterPanel::setMinimumAngle(double degrees)
 
 bool ParameterPanel::curve() const
 {
-  return this->Dimension == 2 && this->CurveBox->isChecked();
+  return this->CurveBox->isChecked() && (this->Dimension == 2 || this->decimate());
 }
 
 void ParameterPanel::setCurve(bool on)

@@ -6,8 +6,9 @@
  * @file ParameterPanel.h
  * A Qt5 panel for the parameters of vtkLabelMesher (mesher, decimator and
  * curver in one pipeline): the two distance bounds (shown in voxels of the smallest
- * spacing or in mm), the decimator's angle bound, whether to curve (2D images)
- * and the curver's smoothness and tension, and presets. Every value is a Q_PROPERTY with a change signal; the
+ * spacing or in mm), the decimator's angle bound, whether to curve (2D images:
+ * cubic Bezier triangles, with the curver's smoothness and tension; 3D images:
+ * quadratic tetrahedra from the decimated mesh), and presets. Every value is a Q_PROPERTY with a change signal; the
  * distance properties are always in voxels (the filters' unit), whatever the
  * display unit. Each control's tooltip states the guarantee it sets.
  */
@@ -68,7 +69,8 @@ public:
   /// MiB the process may hold at most; a run estimated above it is refused before it starts. 0: the
   /// memory available.
   double memoryLimit() const;
-  /// Curve the mesh with vtkBezierCurver: only for 2D images (always false for 3D ones).
+  /// Curve the mesh: a 2D image into cubic Bezier triangles (vtkBezierCurver), a 3D one into
+  /// quadratic tetrahedra (vtkLabelMesher's Order 2), which needs decimation (false without it).
   bool curve() const;
   int smoothness() const;      ///< 1 (C1) or 2 (C2)
   double tension() const;      ///< dimensionless, [0, 1]
@@ -85,7 +87,7 @@ public slots:
   void setMinimumAngle(double degrees);
   void setBlockCells(int cells);    ///< negative values are refused
   void setMemoryLimit(double mib);  ///< negative and non-finite values are refused
-  void setCurve(bool on); ///< kept for the next 2D image when the current one is 3D
+  void setCurve(bool on); ///< kept across images, and for a 3D image while decimation is off
   void setSmoothness(int continuity);
   void setTension(double tension);
   void setPreset(Preset preset);

@@ -53,7 +53,10 @@ labelmesher_cli::MeshingSettings SettingsOf(const widgets::ParameterPanel& panel
   settings.MeshToImageDistance = panel.meshToImageDistance();
   settings.Decimate = panel.decimate();
   settings.MinimumAngle = panel.minimumAngle();
-  settings.Curve = panel.curve();
+  // Curving a 2D image makes cubic Bezier triangles, a 3D one quadratic tetrahedra.
+  const bool flat = panel.imageDimension() == 2;
+  settings.Curve = panel.curve() && flat;
+  settings.Order = panel.curve() && !flat ? 2 : 1;
   settings.Smoothness = panel.smoothness();
   settings.Tension = panel.tension();
   settings.BlockCells = panel.blockCells();
@@ -291,8 +294,12 @@ void MainWindow::onFinished()
   this->Histogram->setMesh(out.Mesh, bound);
   this->showReport();
   this->Progress->setValue(kProgressSteps);
+  const bool quadratic = this->Report && this->Report->Quadratic;
   QString done = out.Curved
-    ? tr("meshed and curved in %1 s: %2 curved cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Curved->GetNumberOfCells())
+    ? tr("meshed and curved in %1 s: %2 %3")
+        .arg(this->Job.seconds(), 0, 'f', 1)
+        .arg(out.Curved->GetNumberOfCells())
+        .arg(quadratic ? tr("quadratic tetrahedra") : tr("curved cells"))
     : tr("meshed in %1 s: %2 cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
   // A failed or unfaithful curving is shown (the marked mesh, for inspection) and said plainly.
   if (!out.CurveError.empty())
@@ -303,6 +310,10 @@ void MainWindow::onFinished()
              !this->Curves->CornerAnglesHold()))
   {
     done += tr("; THE CURVES BREAK A BOUND (see the summary)");
+  }
+  else if (quadratic && !labelmesher::report::QuadraticHolds(*this->Report))
+  {
+    done += tr("; THE QUADRATIC MESH BREAKS A BOUND (see the summary)");
   }
   else if (!out.Warning.empty())
   {
@@ -361,14 +372,20 @@ bool MainWindow::saveMesh(const QString& path)
     return false;
   }
   const std::optional<labelmesher::io::MeshFormat> format = labelmesher::io::FormatOfPath(path.toStdString());
-  if (out.Curved && format && !labelmesher::io::HoldsCurvedCells(*format))
+  const bool quadratic = this->Report->Quadratic.has_value();
+  if (out.Curved && quadratic && format && !labelmesher::io::HoldsQuadraticCells(*format))
+  {
+    this->fail(tr("cannot save '%1': quadratic tetrahedra can be saved as .vtu, .vtk, .msh, .inp or .mesh only").arg(path));
+    return false;
+  }
+  if (out.Curved && !quadratic && format && !labelmesher::io::HoldsCurvedCells(*format))
   {
     this->fail(tr("cannot save '%1': curved (Bezier) cells can be saved as .vtu, .vtk or .msh only").arg(path));
     return false;
   }
   try
   {
-    // A curved mesh is saved without interfaces, as `labelmesher curve` writes it.
+    // A curved or quadratic mesh is saved without interfaces, as the CLI writes it.
     labelmesher::io::MeshFileWriter writer(out.Curved ? out.Curved : out.Mesh,
       out.Curved ? nullptr : out.Interfaces.GetPointer(), this->Materials, {});
     const std::vector<std::string> written = writer.Write(path.toStdString());

@@ -160,14 +160,22 @@ private slots:
     QCOMPARE(angle.count(), 1);
     panel.setMinimumAngle(35.0);
     QCOMPARE(panel.minimumAngle(), 30.0);
+    // A 3D image is curved into quadratic tetrahedra: no smoothness or tension, and only from
+    // the decimated mesh.
     QVERIFY(!child<QComboBox>(panel, "smoothness")->isEnabled());
-    QVERIFY(!child<QCheckBox>(panel, "curve")->isEnabled());
-    QVERIFY(!panel.curve()); // no curving of a 3D image, whatever the box says
-    panel.setImageGeometry(2, 1.0);
-    QVERIFY(panel.curve()); // the choice is kept for the next 2D image
-    panel.setImageGeometry(3, 1.0);
+    QVERIFY(!child<QDoubleSpinBox>(panel, "tension")->isEnabled());
+    QVERIFY(child<QCheckBox>(panel, "curve")->isEnabled());
+    QVERIFY(panel.curve());
     panel.setDecimate(false);
     QVERIFY(!child<QDoubleSpinBox>(panel, "minimumAngle")->isEnabled());
+    QVERIFY(!child<QCheckBox>(panel, "curve")->isEnabled());
+    QVERIFY(!panel.curve()); // no quadratic tetrahedra without decimation, whatever the box says
+    panel.setImageGeometry(2, 1.0);
+    QVERIFY(panel.curve()); // the choice is kept: a 2D image is curved without decimation too
+    QVERIFY(child<QComboBox>(panel, "smoothness")->isEnabled());
+    panel.setImageGeometry(3, 1.0);
+    panel.setDecimate(true);
+    QVERIFY(panel.curve());
   }
 
   void tooltipsExplainTheGuarantees()

@@ -4,8 +4,10 @@
 // angle histogram (its own measure) against the report, clipping, a saved picture
 // that is not blank and a saved mesh read back; then it cancels a second run midway and checks the
 // window kept the first mesh and meshes again; bad paths give one sentence and change nothing; a
-// 2D slice is meshed and curved: the curver's guarantees in its report, det J sampled on every
-// curved cell shown, the curved mesh saved as .vtu only; a one-row image gets the filters' voxel.
+// 3D image is curved into quadratic tetrahedra (their report, det J sampled on every cell shown,
+// formats without them refused); a 2D slice is meshed and curved: the curver's guarantees in its
+// report, det J sampled on every curved cell shown, the curved mesh saved as .vtu only; a one-row
+// image gets the filters' voxel.
 #include "AngleHistogram.h"
 #include "CurvingChecks.h"
 #include "MainWindow.h"
@@ -18,6 +20,7 @@
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkQuadraticTetra.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
@@ -31,6 +34,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <limits>
 #include <memory>
 
 using labelmesher::gui::MainWindow;
@@ -59,6 +63,44 @@ std::pair<double, int> Coverage(const QImage& image)
   }
   return { static_cast<double>(coloured) / (static_cast<double>(image.width()) * image.height()),
     colours.size() };
+}
+double Determinant(const double m[3][3])
+{
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/// The orientation (+1 or -1) of the tetrahedron with these corners.
+double Orientation(const double x[10][3])
+{
+  double corners[3][3];
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      corners[a][b] = x[a + 1][b] - x[0][b];
+  return Determinant(corners) > 0.0 ? 1.0 : -1.0;
+}
+
+/// The smallest det J of the quadratic tetrahedron with nodes x (VTK's order) over the points of
+/// its barycentric grid of step 1/n, times `sign` (the mesh's orientation): > 0 when it is valid there.
+double SampledMinimumQuadraticJacobian(const double x[10][3], int n, double sign)
+{
+  auto det = Determinant;
+  double smallest = std::numeric_limits<double>::max();
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j)
+      for (int k = 0; i + j + k <= n; ++k)
+      {
+        const double r[3] = { double(i) / n, double(j) / n, double(k) / n };
+        double derivs[30];
+        vtkQuadraticTetra::InterpolationDerivs(r, derivs);
+        double m[3][3] = {};
+        for (int d = 0; d < 3; ++d)
+          for (int node = 0; node < 10; ++node)
+            for (int c = 0; c < 3; ++c)
+              m[d][c] += derivs[10 * d + node] * x[node][c];
+        smallest = std::min(smallest, sign * det(m));
+      }
+  return smallest;
 }
 } // namespace
 
@@ -285,6 +327,79 @@ private slots:
     QVERIFY(Window->report()->TopologyMatches());
     QVERIFY(Window->report()->Cells != FirstCells);
     QCOMPARE(Window->view()->shownCells(), Window->report()->Cells);
+  }
+
+  void curvesA3DImageIntoQuadraticTetrahedra()
+  {
+    // The rat head is still open: curving a volume makes quadratic tetrahedra of the decimated mesh.
+    QCOMPARE(Window->parameters()->imageDimension(), 3);
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    Window->parameters()->setPreset(ParameterPanel::Preset::Balanced);
+    Window->parameters()->setCurve(true);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QCOMPARE(errors.count(), 0);
+
+    // The quadratic stage's guarantees, from the report (the CLI's `mesh --order 2` figures).
+    QVERIFY(Window->report().has_value() && Window->report()->Quadratic.has_value());
+    QVERIFY(!Window->curveReport().has_value()); // no Bezier curve report for tetrahedra
+    const labelmesher::report::RunReport& r = *Window->report();
+    const labelmesher::report::QuadraticEntry& q = *r.Quadratic;
+    QCOMPARE(q.ScaledJacobianBound, 0.1);
+    QVERIFY2(q.CertifiedMinimumScaledJacobian >= q.ScaledJacobianBound,
+      qPrintable(QString::number(q.CertifiedMinimumScaledJacobian)));
+    const double slack = q.MeasureResolution.value_or(0.0) + 1e-9;
+    QVERIFY(q.MeasuredImageToMesh && *q.MeasuredImageToMesh <= 2.0 + slack);
+    QVERIFY(q.MeasuredMeshToImage && *q.MeasuredMeshToImage <= 2.0 + slack);
+    QVERIFY(q.CurvedEdges > 0);
+    QVERIFY(labelmesher::report::QuadraticHolds(r));
+    QVERIFY(Window->summaryText().contains("quadratic tetrahedra"));
+
+    // The view shows the quadratic tetrahedra themselves, each valid by det J sampled on a
+    // barycentric grid (apart from the curver's Bernstein bound), with their curved edges.
+    vtkUnstructuredGrid* shown = Window->view()->mesh();
+    QVERIFY(shown);
+    QCOMPARE(static_cast<long long>(shown->GetNumberOfCells()), q.Cells);
+    QVERIFY(Window->view()->showsCurvedCells());
+    QVERIFY(Window->view()->drawnEdges() > 0);
+    vtkNew<vtkIdList> ids;
+    double orientation = 0.0; // the mesh's, the first cell's: every cell must share it
+    for (vtkIdType cell = 0; cell < shown->GetNumberOfCells(); ++cell)
+    {
+      QCOMPARE(shown->GetCellType(cell), static_cast<int>(VTK_QUADRATIC_TETRA));
+      shown->GetCellPoints(cell, ids);
+      double x[10][3];
+      for (int k = 0; k < 10; ++k)
+        shown->GetPoint(ids->GetId(k), x[k]);
+      if (orientation == 0.0)
+        orientation = Orientation(x);
+      const double jacobian = SampledMinimumQuadraticJacobian(x, 6, orientation);
+      QVERIFY2(jacobian > 0.0, qPrintable(QString("cell %1: sampled det J %2").arg(cell).arg(jacobian)));
+    }
+    const QImage picture = Window->view()->grabPicture();
+    QVERIFY(Coverage(picture).first > 0.02);
+    if (!Folder.autoRemove())
+      QVERIFY(picture.save(Folder.filePath("quadratic.png")));
+
+    // Saved as the CLI writes it; formats without quadratic tetrahedra refused, nothing written.
+    QVERIFY(!Window->saveMesh(Folder.filePath("quadratic.stl")));
+    QVERIFY(errors.last().at(0).toString().contains(".inp or .mesh only"));
+    QVERIFY(!QFile::exists(Folder.filePath("quadratic.stl")));
+    QVERIFY(Window->saveMesh(Folder.filePath("quadratic.inp")));
+    QVERIFY(Window->saveMesh(Folder.filePath("quadratic.vtu")));
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(qPrintable(Folder.filePath("quadratic.vtu")));
+    reader->Update();
+    QCOMPARE(reader->GetOutput()->GetNumberOfCells(), shown->GetNumberOfCells());
+    QCOMPARE(reader->GetOutput()->GetCellType(0), static_cast<int>(VTK_QUADRATIC_TETRA));
+
+    // Curving off again: the linear mesh.
+    Window->parameters()->setCurve(false);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 2, kRunTimeoutMs);
+    QVERIFY(!Window->report()->Quadratic.has_value());
+    QVERIFY(!Window->view()->showsCurvedCells());
   }
 
   void badImagesChangeNothing()

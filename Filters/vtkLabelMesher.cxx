@@ -345,7 +345,11 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
     return false;
   }
   const auto blockCells = static_cast<std::uint64_t>(std::max<vtkIdType>(0, this->BlockCells));
-  const labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
+  labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
+  if (this->Order == 2)
+  {
+    estimate = labelmesher::WithQuadraticStage(estimate, this->MeasureOutput);
+  }
   const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
   const std::string refusal =
     labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);

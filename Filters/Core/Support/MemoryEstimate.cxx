@@ -37,6 +37,14 @@ constexpr double kLastPassBytesPerCell = 105.0;
 constexpr double kLastPassShare = 0.18;
 constexpr double kStreamedBytesPerFace = 48.0;
 
+/// The quadratic stage (Order 2), per voxel face between labels, beside the output it starts
+/// from: its own structures (totalseg 510, digimouse 665 bytes a face measured), and its
+/// measurements (the cells refined for the voxel count and the boundary flattened for the
+/// distances: totalseg 5,400, the rat head 2,700). Benchmarks/README.md, "Quadratic
+/// tetrahedra: time and memory".
+constexpr double kQuadraticBytesPerFace = 650.0;
+constexpr double kQuadraticMeasureBytesPerFace = 5400.0;
+
 double ImageBytes(const LabelImage& image)
 {
   return (image.BytesPerLabel() + kPyramidBytesPerVoxel) * static_cast<double>(image.NumberOfVoxels());
@@ -93,6 +101,15 @@ MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blo
   e.RunBytes = static_cast<std::uint64_t>(kFixedBytes + ImageBytes(image) +
     kStreamedBytesPerFace * static_cast<double>(e.InterfaceFaces) + run);
   return e;
+}
+
+MemoryEstimate WithQuadraticStage(MemoryEstimate estimate, bool measured)
+{
+  // The stage runs once the decimation has let go of its blocks: its need adds to what the run
+  // holds after it (the image, the output), which the streamed peak already covers.
+  const double perFace = kQuadraticBytesPerFace + (measured ? kQuadraticMeasureBytesPerFace : 0.0);
+  estimate.RunBytes += static_cast<std::uint64_t>(perFace * static_cast<double>(estimate.InterfaceFaces));
+  return estimate;
 }
 
 std::uint64_t EstimateDecimationMemory(std::uint64_t cells)

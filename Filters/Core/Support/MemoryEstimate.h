@@ -42,6 +42,12 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate);
 /// The memory of meshing and decimating `image` block by block
 /// (Streaming/StreamedPipeline.h), blocks of `blockCells` initial cells (0: one block).
 MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blockCells);
+/// `estimate` (EstimateStreamedMemory's) with the quadratic stage after the
+/// decimation (vtkLabelMesher's Order 2, Quadratic/QuadraticCurver.h): its
+/// mid-nodes, elastic system and distance certificates, and when `measured`
+/// the refined cells its measurements take, beside the output held, priced
+/// per voxel face between labels (the curved interfaces follow them).
+MemoryEstimate WithQuadraticStage(MemoryEstimate estimate, bool measured);
 /// The memory of decimating a mesh of `cells` cells (the decimator alone, its
 /// input already held).
 std::uint64_t EstimateDecimationMemory(std::uint64_t cells);

@@ -88,6 +88,31 @@ TEST(MemoryEstimate, StreamedRunsNeedLessWithSmallerBlocks)
   EXPECT_LT(whole.RunBytes, EstimateMemory(checkerboard, true).RunBytes);
 }
 
+TEST(MemoryEstimate, TheQuadraticStageAddsPerInterfaceFaceAndMoreWhenMeasured)
+{
+  LabelImage small(20, 20, 20), large(40, 40, 40);
+  for (LabelImage* image : { &small, &large })
+    for (int k = 0; k < image->Dimensions[2]; ++k)
+      for (int j = 0; j < image->Dimensions[1]; ++j)
+        for (int i = 0; i < image->Dimensions[0]; ++i)
+          (*image)(i, j, k) = 1 + (i / 4 + j / 4 + k / 4) % 3;
+  for (const LabelImage* image : { &small, &large })
+  {
+    const MemoryEstimate linear = EstimateStreamedMemory(*image, 0);
+    const MemoryEstimate quadratic = WithQuadraticStage(linear, false), measured = WithQuadraticStage(linear, true);
+    EXPECT_EQ(quadratic.InterfaceFaces, linear.InterfaceFaces);
+    EXPECT_GT(quadratic.RunBytes, linear.RunBytes);
+    EXPECT_GT(measured.RunBytes, quadratic.RunBytes);
+  }
+  // The added need follows the interface: eight times the faces, eight times the addition.
+  const auto added = [](const LabelImage& image) {
+    const MemoryEstimate linear = EstimateStreamedMemory(image, 0);
+    return static_cast<double>(WithQuadraticStage(linear, true).RunBytes - linear.RunBytes) /
+      static_cast<double>(linear.InterfaceFaces);
+  };
+  EXPECT_NEAR(added(large), added(small), 1.0);
+}
+
 TEST(MemoryEstimate, LibscAllocationFailureThrowsInsteadOfAborting)
 {
 #if defined(__SANITIZE_ADDRESS__)

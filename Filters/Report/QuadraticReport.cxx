@@ -73,10 +73,11 @@ void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
       << " curved interface edges (" << q.FittedEdges << " fitted, " << q.PulledBackEdges << " pulled back), "
       << q.UntangledEdges << " interior edges moved by elasticity; " << q.Rounds << " rounds\n";
   out << "  scaled Jacobian (min det J / max det J) >= " << FormatFixed(q.CertifiedMinimumScaledJacobian, 3)
-      << " certified (bound " << FormatFixed(q.ScaledJacobianBound, 3) << ")";
+      << " certified over every cell of the box, background included (bound " << FormatFixed(q.ScaledJacobianBound, 3)
+      << ")";
   if (q.SampledMinimumScaledJacobian)
     out << ", " << FormatFixed(*q.SampledMinimumScaledJacobian, 3) << " sampled";
-  out << "; certified lower bounds:\n";
+  out << "; certified lower bounds of the cells written:\n";
   PrintJacobianHistogram(q.ScaledJacobianHistogram, out);
   if (q.MeasuredImageToMesh)
     out << "  curved interfaces: h(I,M) " << FormatFixed(*q.MeasuredImageToMesh, 3) << ", h(M,I) "

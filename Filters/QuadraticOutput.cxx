@@ -130,7 +130,7 @@ void AddQuadraticMeasurements(vtkFieldData* fd, const LabelImage& image, const Q
   AddScalarField(fd, arrays::MisclassifiedVoxelsLinear,
     static_cast<double>(MeasureVoxelAccuracy(image, mesh.Linear).Misclassified));
   AddScalarField(fd, arrays::MisclassifiedVoxelsQuadratic,
-    static_cast<double>(MeasureVoxelAccuracy(image, RefineQuadraticMesh(mesh, kAccuracySteps)).Misclassified));
+    static_cast<double>(MeasureVoxelAccuracy(image, mesh, kAccuracySteps).Misclassified));
 }
 
 } // namespace labelmesher

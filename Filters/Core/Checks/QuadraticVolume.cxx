@@ -76,6 +76,51 @@ double RefinementTolerance(const QuadraticMesh& mesh, int n)
   return 2.0 / 3.0 * bend / (double(n) * n);
 }
 
+namespace
+{
+/// Calls f(p, sorted) for each of the n³ Kuhn (Freudenthal) tetrahedra of cell c at step 1/n:
+/// p[s] = (p1 >= p2 >= p3), a point of the ordered simplex n >= p1 >= p2 >= p3 >= 0, with
+/// weights (n − p1, p1 − p2, p2 − p3, p3) on the cell's corners in the order `sorted` (by
+/// global id, so that neighbours subdivide their common face alike).
+template <typename F>
+void ForEachKuhnTetrahedron(const QuadraticMesh& mesh, std::size_t c, int n, F&& f)
+{
+  // Kuhn's tetrahedra of the cube at the origin: from (0,0,0) to (1,1,1) one axis at a time.
+  static const int order[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  const std::int64_t* v = mesh.Linear.Cell(c);
+  int sorted[4] = { 0, 1, 2, 3 };
+  std::sort(sorted, sorted + 4, [&](int a, int b) { return v[a] < v[b]; });
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k)
+        for (const auto& axes : order)
+        {
+          int p[4][3];
+          p[0][0] = i, p[0][1] = j, p[0][2] = k;
+          for (int s = 1; s < 4; ++s)
+          {
+            std::copy(p[s - 1], p[s - 1] + 3, p[s]);
+            ++p[s][axes[s - 1]];
+          }
+          bool inside = true;
+          for (const auto& q : p)
+            inside = inside && n >= q[0] && q[0] >= q[1] && q[1] >= q[2] && q[2] >= 0;
+          if (inside)
+            f(p, sorted);
+        }
+}
+
+/// The point of the quadratic cell at lattice point q (weights on the sorted corners).
+Point3 LatticePoint(const std::array<Point3, 10>& nodes, const int sorted[4], const int q[3], int n)
+{
+  const int w[4] = { n - q[0], q[0] - q[1], q[1] - q[2], q[2] };
+  double l[4] = { 0, 0, 0, 0 };
+  for (int k = 0; k < 4; ++k)
+    l[sorted[k]] = double(w[k]) / n;
+  return Map(nodes, l);
+}
+} // namespace
+
 SimplexMesh RefineQuadraticMesh(const QuadraticMesh& mesh, int n)
 {
   SimplexMesh out;
@@ -83,65 +128,38 @@ SimplexMesh RefineQuadraticMesh(const QuadraticMesh& mesh, int n)
   // A lattice point is named by the corners (global ids, ascending) it is a combination of and
   // their integer weights: the same name from every cell around it.
   std::map<std::array<std::int64_t, 8>, std::int64_t> named;
-  // Kuhn's tetrahedra of the cube at the origin: from (0,0,0) to (1,1,1) one axis at a time.
-  static const int order[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
     const std::array<Point3, 10> nodes = mesh.Nodes(c);
     const std::int64_t* v = mesh.Linear.Cell(c);
-    int sorted[4] = { 0, 1, 2, 3 };
-    std::sort(sorted, sorted + 4, [&](int a, int b) { return v[a] < v[b]; });
-    const double orientation = Volume6(nodes[sorted[0]], nodes[sorted[1]], nodes[sorted[2]], nodes[sorted[3]]);
-    // Point p = (p1 >= p2 >= p3) of the ordered simplex n >= p1 >= p2 >= p3 >= 0 has weights
-    // (n − p1, p1 − p2, p2 − p3, p3) on the sorted corners.
-    auto pointId = [&](const int p[3]) {
-      const std::int64_t w[4] = { n - p[0], p[0] - p[1], p[1] - p[2], p[2] };
-      std::array<std::int64_t, 8> name;
-      name.fill(-1);
-      int used = 0;
-      for (int k = 0; k < 4; ++k)
-        if (w[k] > 0)
-          name[2 * used] = v[sorted[k]], name[2 * used + 1] = w[k], ++used;
-      const auto [it, added] = named.emplace(name, static_cast<std::int64_t>(out.Points.size()));
-      if (added)
-      {
-        double l[4] = { 0, 0, 0, 0 };
+    ForEachKuhnTetrahedron(mesh, c, n, [&](const int p[4][3], const int sorted[4]) {
+      const double orientation = Volume6(nodes[sorted[0]], nodes[sorted[1]], nodes[sorted[2]], nodes[sorted[3]]);
+      auto pointId = [&](const int q[3]) {
+        const std::int64_t w[4] = { n - q[0], q[0] - q[1], q[1] - q[2], q[2] };
+        std::array<std::int64_t, 8> name;
+        name.fill(-1);
+        int used = 0;
         for (int k = 0; k < 4; ++k)
-          l[sorted[k]] = double(w[k]) / n;
-        out.Points.push_back(Map(nodes, l));
-      }
-      return it->second;
-    };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        for (int k = 0; k < n; ++k)
-          for (const auto& axes : order)
-          {
-            int p[4][3];
-            p[0][0] = i, p[0][1] = j, p[0][2] = k;
-            for (int s = 1; s < 4; ++s)
-            {
-              std::copy(p[s - 1], p[s - 1] + 3, p[s]);
-              ++p[s][axes[s - 1]];
-            }
-            bool inside = true;
-            for (const auto& q : p)
-              inside = inside && n >= q[0] && q[0] >= q[1] && q[1] >= q[2] && q[2] >= 0;
-            if (!inside)
-              continue;
-            std::int64_t ids[4];
-            for (int s = 0; s < 4; ++s)
-              ids[s] = pointId(p[s]);
-            // Orientation in lattice coordinates times the cell's: the map from the lattice
-            // to the straight cell has the sign of `orientation` (its columns are differences
-            // of consecutive sorted corners).
-            auto lattice = [&](int s) { return Point3{ double(p[s][0]), double(p[s][1]), double(p[s][2]) }; };
-            const double sign = Volume6(lattice(0), lattice(1), lattice(2), lattice(3)) * orientation;
-            if (sign < 0.0)
-              std::swap(ids[1], ids[2]);
-            out.Connectivity.insert(out.Connectivity.end(), ids, ids + 4);
-            out.Materials.push_back(mesh.Linear.Materials[c]);
-          }
+          if (w[k] > 0)
+            name[2 * used] = v[sorted[k]], name[2 * used + 1] = w[k], ++used;
+        const auto [it, added] = named.emplace(name, static_cast<std::int64_t>(out.Points.size()));
+        if (added)
+          out.Points.push_back(LatticePoint(nodes, sorted, q, n));
+        return it->second;
+      };
+      std::int64_t ids[4];
+      for (int s = 0; s < 4; ++s)
+        ids[s] = pointId(p[s]);
+      // Orientation in lattice coordinates times the cell's: the map from the lattice to the
+      // straight cell has the sign of `orientation` (its columns are differences of consecutive
+      // sorted corners).
+      auto lattice = [&](int s) { return Point3{ double(p[s][0]), double(p[s][1]), double(p[s][2]) }; };
+      const double sign = Volume6(lattice(0), lattice(1), lattice(2), lattice(3)) * orientation;
+      if (sign < 0.0)
+        std::swap(ids[1], ids[2]);
+      out.Connectivity.insert(out.Connectivity.end(), ids, ids + 4);
+      out.Materials.push_back(mesh.Linear.Materials[c]);
+    });
   }
   return out;
 }
@@ -177,6 +195,11 @@ std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n
     if (here == there)
       continue;
     const std::array<Point3, 10> nodes = mesh.Nodes(side.Cell);
+    // A face whose three edges are straight is its flat triangle: one facet, the same points.
+    bool straight = true;
+    for (int e = 0; e < 6; ++e)
+      if (kTetraEdges[e][0] != side.Opposite && kTetraEdges[e][1] != side.Opposite)
+        straight = straight && !mesh.Curved(static_cast<std::size_t>(mesh.CellEdges[side.Cell * 6 + static_cast<std::size_t>(e)]));
     // The face's lattice: weights on its three corners (the cell's others), 0 on the opposite one.
     int corner[3], used = 0;
     for (int k = 0; k < 4; ++k)
@@ -187,6 +210,11 @@ std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n
       l[corner[0]] = double(n - i - j) / n, l[corner[1]] = double(i) / n, l[corner[2]] = double(j) / n;
       return Map(nodes, l);
     };
+    if (straight)
+    {
+      facets.push_back({ { at(0, 0), at(n, 0), at(0, n) }, here, there });
+      continue;
+    }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i + j < n; ++i)
       {
@@ -198,10 +226,61 @@ std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n
   return facets;
 }
 
+namespace
+{
+constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::min();
+
+/// Every voxel centre in the tetrahedron p not claimed yet goes to `material`.
+void Claim(const LabelImage& image, const Point3 p[4], std::int64_t material, std::vector<std::int64_t>& claimed)
+{
+  const double volume = Volume6(p[0], p[1], p[2], p[3]);
+  if (!(std::fabs(volume) > 0.0))
+    return;
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double mn = std::min({ p[0][a], p[1][a], p[2][a], p[3][a] });
+    const double mx = std::max({ p[0][a], p[1][a], p[2][a], p[3][a] });
+    lo[a] = std::max(0, static_cast<int>(std::ceil(mn - 1e-9)));
+    hi[a] = std::min(image.Dimensions[a] - 1, static_cast<int>(std::floor(mx + 1e-9)));
+  }
+  const double tolerance = 1e-12 * std::fabs(volume);
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i)
+      {
+        const Point3 x{ double(i), double(j), double(k) };
+        // Barycentric weights as signed sub-volumes, each of the cell's sign when inside.
+        const double w[4] = { Volume6(x, p[1], p[2], p[3]), Volume6(p[0], x, p[2], p[3]),
+          Volume6(p[0], p[1], x, p[3]), Volume6(p[0], p[1], p[2], x) };
+        bool inside = true;
+        for (double wk : w)
+          inside = inside && wk * (volume > 0 ? 1.0 : -1.0) >= -tolerance;
+        if (!inside)
+          continue;
+        std::int64_t& owner = claimed[image.Index(i, j, k)];
+        if (owner == kNone)
+          owner = material;
+      }
+}
+
+VoxelAccuracy Count(const LabelImage& image, const std::vector<std::int64_t>& claimed)
+{
+  VoxelAccuracy accuracy;
+  accuracy.Voxels = claimed.size();
+  for (int k = 0; k < image.Dimensions[2]; ++k)
+    for (int j = 0; j < image.Dimensions[1]; ++j)
+      for (int i = 0; i < image.Dimensions[0]; ++i)
+      {
+        const std::int64_t owner = claimed[image.Index(i, j, k)];
+        accuracy.Misclassified += (owner == kNone ? 0 : owner) != image.At(i, j, k) ? 1 : 0;
+      }
+  return accuracy;
+}
+} // namespace
+
 VoxelAccuracy MeasureVoxelAccuracy(const LabelImage& image, const SimplexMesh& mesh)
 {
-  const int nx = image.Dimensions[0], ny = image.Dimensions[1], nz = image.Dimensions[2];
-  constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::min();
   std::vector<std::int64_t> claimed(image.NumberOfVoxels(), kNone);
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
@@ -209,46 +288,34 @@ VoxelAccuracy MeasureVoxelAccuracy(const LabelImage& image, const SimplexMesh& m
     Point3 p[4];
     for (int k = 0; k < 4; ++k)
       p[k] = mesh.Points[static_cast<std::size_t>(v[k])];
-    const double volume = Volume6(p[0], p[1], p[2], p[3]);
-    if (!(std::fabs(volume) > 0.0))
-      continue;
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double mn = std::min({ p[0][a], p[1][a], p[2][a], p[3][a] });
-      const double mx = std::max({ p[0][a], p[1][a], p[2][a], p[3][a] });
-      lo[a] = std::max(0, static_cast<int>(std::ceil(mn - 1e-9)));
-      hi[a] = std::min(image.Dimensions[a] - 1, static_cast<int>(std::floor(mx + 1e-9)));
-    }
-    const double tolerance = 1e-12 * std::fabs(volume);
-    for (int k = lo[2]; k <= hi[2]; ++k)
-      for (int j = lo[1]; j <= hi[1]; ++j)
-        for (int i = lo[0]; i <= hi[0]; ++i)
-        {
-          const Point3 x{ double(i), double(j), double(k) };
-          // Barycentric weights as signed sub-volumes, each of the cell's sign when inside.
-          const double w[4] = { Volume6(x, p[1], p[2], p[3]), Volume6(p[0], x, p[2], p[3]),
-            Volume6(p[0], p[1], x, p[3]), Volume6(p[0], p[1], p[2], x) };
-          bool inside = true;
-          for (double wk : w)
-            inside = inside && wk * (volume > 0 ? 1.0 : -1.0) >= -tolerance;
-          if (!inside)
-            continue;
-          std::int64_t& owner = claimed[image.Index(i, j, k)];
-          if (owner == kNone)
-            owner = mesh.Materials[c];
-        }
+    Claim(image, p, mesh.Materials[c], claimed);
   }
-  VoxelAccuracy accuracy;
-  accuracy.Voxels = claimed.size();
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::int64_t owner = claimed[image.Index(i, j, k)];
-        accuracy.Misclassified += (owner == kNone ? 0 : owner) != image.At(i, j, k) ? 1 : 0;
-      }
-  return accuracy;
+  return Count(image, claimed);
+}
+
+VoxelAccuracy MeasureVoxelAccuracy(const LabelImage& image, const QuadraticMesh& mesh, int n)
+{
+  // The cells of RefineQuadraticMesh(mesh, n), in its order, one at a time (nothing held but
+  // the claims); a straight cell is its own union of sub-cells.
+  std::vector<std::int64_t> claimed(image.NumberOfVoxels(), kNone);
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    const std::array<Point3, 10> nodes = mesh.Nodes(c);
+    const std::int64_t material = mesh.Linear.Materials[c];
+    if (!mesh.CellIsCurved(c))
+    {
+      const Point3 p[4] = { nodes[0], nodes[1], nodes[2], nodes[3] };
+      Claim(image, p, material, claimed);
+      continue;
+    }
+    ForEachKuhnTetrahedron(mesh, c, n, [&](const int q[4][3], const int sorted[4]) {
+      Point3 p[4];
+      for (int s = 0; s < 4; ++s)
+        p[s] = LatticePoint(nodes, sorted, q[s], n);
+      Claim(image, p, material, claimed);
+    });
+  }
+  return Count(image, claimed);
 }
 
 } // namespace labelmesher

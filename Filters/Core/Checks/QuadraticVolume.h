@@ -31,9 +31,10 @@ namespace labelmesher
 SimplexMesh RefineQuadraticMesh(const QuadraticMesh& mesh, int n);
 
 /// The faces bounding a material (between cells of two materials, or of one
-/// cell: the box), each flattened into the n² triangles through its points at
-/// step 1/n: the curved boundary to within RefinementTolerance(mesh, n), for
-/// MeasureHausdorff at a fine step without refining the volume.
+/// cell: the box), each curved one flattened into the n² triangles through its
+/// points at step 1/n, each straight one as it is: the curved boundary to
+/// within RefinementTolerance(mesh, n), for MeasureHausdorff at a fine step
+/// without refining the volume.
 std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n);
 
 /// How far RefineQuadraticMesh(mesh, n)'s boundaries may be from the curved ones, voxels.
@@ -55,6 +56,9 @@ struct VoxelAccuracy
 };
 /// Of a linear tetrahedral mesh in index space (voxel centres at integer points).
 VoxelAccuracy MeasureVoxelAccuracy(const LabelImage& image, const SimplexMesh& mesh);
+/// Of a quadratic one: its curved cells refined at step 1/n as RefineQuadraticMesh does, one
+/// cell at a time (the refined mesh is never held), its straight cells as they are.
+VoxelAccuracy MeasureVoxelAccuracy(const LabelImage& image, const QuadraticMesh& mesh, int n);
 
 } // namespace labelmesher
 

@@ -39,11 +39,11 @@ constexpr double kStreamedBytesPerFace = 48.0;
 
 /// The quadratic stage (Order 2), per voxel face between labels, beside the output it starts
 /// from: its own structures (totalseg 510, digimouse 665 bytes a face measured), and its
-/// measurements (the cells refined for the voxel count and the boundary flattened for the
-/// distances: totalseg 5,400, the rat head 2,700). Benchmarks/README.md, "Quadratic
-/// tetrahedra: time and memory".
+/// measurements (the curved faces flattened for the distances, the measures' own structures:
+/// totalseg 3,900, the rat head 1,900). Benchmarks/README.md, "Quadratic tetrahedra: time and
+/// memory".
 constexpr double kQuadraticBytesPerFace = 650.0;
-constexpr double kQuadraticMeasureBytesPerFace = 5400.0;
+constexpr double kQuadraticMeasureBytesPerFace = 4000.0;
 
 double ImageBytes(const LabelImage& image)
 {

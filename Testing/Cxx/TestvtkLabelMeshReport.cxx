@@ -190,14 +190,17 @@ TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
   const double sampled = quadratic->GetFieldData()->GetArray(arrays::SampledMinimumScaledJacobian)->GetComponent(0, 0);
   const double certified = quadratic->GetFieldData()->GetArray(arrays::CertifiedMinimumScaledJacobian)->GetComponent(0, 0);
   const double distance = quadratic->GetFieldData()->GetArray(arrays::MeasuredImageToMeshDistance)->GetComponent(0, 0);
+  const double back = quadratic->GetFieldData()->GetArray(arrays::MeasuredMeshToImageDistance)->GetComponent(0, 0);
   for (const auto& c : { std::make_pair(arrays::CertifiedMinimumScaledJacobian, 0.05),
-         std::make_pair(arrays::SampledMinimumScaledJacobian, 0.05), std::make_pair(arrays::MeasuredImageToMeshDistance, 2.5) })
+         std::make_pair(arrays::SampledMinimumScaledJacobian, 0.05), std::make_pair(arrays::MeasuredImageToMeshDistance, 2.5),
+         std::make_pair(arrays::MeasuredMeshToImageDistance, 2.5) })
   {
     Spoil(quadratic, c.first, c.second);
     EXPECT_FALSE(report->GetGuaranteesHold()) << c.first;
     Spoil(quadratic, arrays::CertifiedMinimumScaledJacobian, certified);
     Spoil(quadratic, arrays::SampledMinimumScaledJacobian, sampled);
     Spoil(quadratic, arrays::MeasuredImageToMeshDistance, distance);
+    Spoil(quadratic, arrays::MeasuredMeshToImageDistance, back);
     ASSERT_TRUE(report->GetGuaranteesHold()) << c.first << " restored";
   }
 }

@@ -313,14 +313,17 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
       std::vector<ConvexPiece> straight, all;
       std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
       // Consecutive voxel faces are neighbours (sorted by position): the faces near them repeat.
+      // The cache is bounded by its sub-triangles (a face has 1 to 1,024), about 19 MB a thread.
       std::unordered_map<std::size_t, std::vector<std::array<Point3, 3>>> flattened;
+      std::size_t cachedTriangles = 0;
       auto flattening = [&](std::size_t g) -> const std::vector<std::array<Point3, 3>>& {
         auto known = flattened.find(g);
         if (known == flattened.end())
         {
-          if (flattened.size() >= 4096)
-            flattened.clear();
+          if (cachedTriangles >= (1u << 18))
+            flattened.clear(), cachedTriangles = 0;
           known = flattened.emplace(g, flatten(g)).first;
+          cachedTriangles += known->second.size();
         }
         return known->second;
       };
@@ -372,9 +375,12 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
         blamed[thread].insert(blamed[thread].end(), near.begin(), near.end());
       }
     });
-    for (const std::vector<std::size_t>& list : blamed)
+    for (std::vector<std::size_t>& list : blamed)
+    {
       for (std::size_t g : list)
         failing[g] = 1;
+      list.clear();
+    }
   }
   std::vector<std::size_t> out;
   for (std::size_t f = 0; f < faces.size(); ++f)

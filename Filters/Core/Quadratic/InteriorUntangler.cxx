@@ -174,6 +174,8 @@ std::size_t InteriorUntangler::Solve(QuadraticMesh& mesh)
     }
     // Column 3 b + j holds rows 3 a + i for the edges a coupled to b, in order.
     auto withPattern = [](Eigen::SparseMatrix<double>& m, std::vector<std::vector<int>>& rowsOf) {
+      if (m.cols() == 0)
+        return; // Eigen's makeCompressed reads past a reserved matrix of no columns (ASan)
       Eigen::VectorXi sizes(m.cols());
       for (std::size_t b = 0; b < rowsOf.size(); ++b)
         for (int j = 0; j < 3; ++j)

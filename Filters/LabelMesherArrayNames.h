@@ -134,6 +134,11 @@ inline constexpr char UntangledEdges[] = "UntangledEdges"; ///< interior edges m
 inline constexpr char PinnedEdges[] = "PinnedEdges";       ///< interior edges pinned straight
 inline constexpr char CertifiedMinimumScaledJacobian[] = "CertifiedMinimumScaledJacobian"; ///< over the cells
 inline constexpr char SampledMinimumScaledJacobian[] = "SampledMinimumScaledJacobian"; ///< measured, lattice of step 1/4
+inline constexpr char CellsFailedCornerAngle[] = "CellsFailedCornerAngle"; ///< in some round, before pulling back
+/// Degrees, over every cell of the box (cell data CornerAngle: each cell's, the curver's exact
+/// tangents); the bound is CornerAngleBound.
+inline constexpr char CertifiedMinimumCornerAngle[] = "CertifiedMinimumCornerAngle";
+inline constexpr char MeasuredMinimumCornerAngle[] = "MeasuredMinimumCornerAngle"; ///< tangents from points of the map
 inline constexpr char Voxels[] = "Voxels";
 inline constexpr char MisclassifiedVoxelsLinear[] = "MisclassifiedVoxelsLinear";
 inline constexpr char MisclassifiedVoxelsQuadratic[] = "MisclassifiedVoxelsQuadratic"; ///< on the cells refined at step 1/4

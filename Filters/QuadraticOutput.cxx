@@ -81,15 +81,18 @@ void PackQuadraticMesh(
   output->SetCells(VTK_QUADRATIC_TETRA, cells);
   vtkNew<vtkIntArray> material;
   material->SetName(arrays::Material);
-  vtkNew<vtkDoubleArray> jacobian;
+  vtkNew<vtkDoubleArray> jacobian, corner;
   jacobian->SetName(arrays::ScaledJacobian);
+  corner->SetName(arrays::CornerAngle);
   for (std::size_t c : kept)
   {
     material->InsertNextValue(linear.Materials[c]);
     jacobian->InsertNextValue(result.ScaledJacobian[c]);
+    corner->InsertNextValue(result.CornerAngle.empty() ? 180.0 : result.CornerAngle[c]);
   }
   output->GetCellData()->SetScalars(material);
   output->GetCellData()->AddArray(jacobian);
+  output->GetCellData()->AddArray(corner);
 }
 
 void AddQuadraticFields(vtkFieldData* fd, const QuadraticResult& result, double minimumScaledJacobian)
@@ -105,6 +108,10 @@ void AddQuadraticFields(vtkFieldData* fd, const QuadraticResult& result, double 
   AddScalarField(fd, arrays::PulledBackEdges, static_cast<double>(result.ShortenedEdges));
   AddScalarField(fd, arrays::CellsFailedScaledJacobian, static_cast<double>(result.CellsFailedQuality));
   AddScalarField(fd, arrays::FacesFailedDistance, static_cast<double>(result.FacesFailedDistance));
+  AddScalarField(fd, arrays::CornerAngleBound, result.CornerAngleBound);
+  AddScalarField(fd, arrays::CertifiedMinimumCornerAngle,
+    result.CornerAngle.empty() ? 180.0 : *std::min_element(result.CornerAngle.begin(), result.CornerAngle.end()));
+  AddScalarField(fd, arrays::CellsFailedCornerAngle, static_cast<double>(result.CellsFailedCornerAngle));
   AddScalarField(fd, arrays::CertificationRounds, static_cast<double>(result.Rounds));
   AddScalarField(fd, arrays::UntangledEdges, static_cast<double>(result.UntangledEdges));
   AddScalarField(fd, arrays::PinnedEdges, static_cast<double>(result.PinnedEdges));
@@ -118,14 +125,19 @@ void AddQuadraticMeasurements(vtkFieldData* fd, const LabelImage& image, const Q
   AddScalarField(fd, arrays::MeasuredImageToMeshDistance, distances.Overall.ImageToMesh);
   AddScalarField(fd, arrays::MeasuredMeshToImageDistance, distances.Overall.MeshToImage);
   AddScalarField(fd, arrays::CurvedMeasureResolution, RefinementTolerance(mesh, kFacetSteps) + 1.0 / 1024.0);
-  double sampled = 1.0;
+  double sampled = 1.0, corner = 180.0;
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    const std::array<Point3, 10> nodes = mesh.Nodes(c);
+    corner = std::min(corner, MeasuredCornerAngle(nodes));
     if (mesh.CellIsCurved(c))
     {
       double smallest = 0.0;
-      sampled = std::min(sampled, SampledScaledJacobian(mesh.Nodes(c), kJacobianSteps, smallest));
+      sampled = std::min(sampled, SampledScaledJacobian(nodes, kJacobianSteps, smallest));
     }
+  }
   AddScalarField(fd, arrays::SampledMinimumScaledJacobian, sampled);
+  AddScalarField(fd, arrays::MeasuredMinimumCornerAngle, corner);
   AddScalarField(fd, arrays::Voxels, static_cast<double>(image.NumberOfVoxels()));
   AddScalarField(fd, arrays::MisclassifiedVoxelsLinear,
     static_cast<double>(MeasureVoxelAccuracy(image, mesh.Linear).Misclassified));

@@ -62,6 +62,8 @@ bool MakeQuadratic(vtkLabelMesher* self, const labelmesher::LabelImage& image, c
   parameters.ImageToMeshDistance = self->GetImageToMeshDistance();
   parameters.MeshToImageDistance = self->GetMeshToImageDistance();
   parameters.MinimumScaledJacobian = self->GetMinimumScaledJacobian();
+  // The corners keep the angle the linear mesh was decimated to.
+  parameters.MinimumCornerAngle = self->GetMinimumAngle();
   labelmesher::QuadraticResult result;
   try
   {

@@ -212,7 +212,7 @@ const std::vector<Option>& Options()
     { nullptr, "--min-angle", "DEG", false,
       "smallest angle the decimator may create, degrees:\n"
       "(0, " + ProvenBound(3) + "] in 3D, (0, " + ProvenBound(2) + "] in 2D                [default 15];\n"
-      "curve: also every curved cell's corner angle",
+      "curve, --order 2: also every curved cell's corner angles",
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
     { nullptr, "--order", "1|2", false,
       "mesh: element order; 2 also makes quadratic tetrahedra\n"

@@ -36,6 +36,10 @@ void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic)
   q.ScaledJacobianBound = FieldValue(fd, arrays::MinimumScaledJacobianBound).value_or(0.0);
   q.CertifiedMinimumScaledJacobian = FieldValue(fd, arrays::CertifiedMinimumScaledJacobian).value_or(0.0);
   q.SampledMinimumScaledJacobian = FieldValue(fd, arrays::SampledMinimumScaledJacobian);
+  q.CornerAngleBound = FieldValue(fd, arrays::CornerAngleBound).value_or(0.0);
+  q.MinimumCornerAngle = FieldValue(fd, arrays::CertifiedMinimumCornerAngle).value_or(0.0);
+  q.CellsFailedCornerAngle = FieldCount(fd, arrays::CellsFailedCornerAngle);
+  q.MeasuredMinimumCornerAngle = FieldValue(fd, arrays::MeasuredMinimumCornerAngle);
   q.MeasuredImageToMesh = FieldValue(fd, arrays::MeasuredImageToMeshDistance);
   q.MeasuredMeshToImage = FieldValue(fd, arrays::MeasuredMeshToImageDistance);
   q.MeasureResolution = FieldValue(fd, arrays::CurvedMeasureResolution);
@@ -61,7 +65,11 @@ bool QuadraticHolds(const RunReport& report)
   const double slack = q.MeasureResolution.value_or(0.0) + 1e-9;
   const bool distances = !q.MeasuredImageToMesh ||
     (*q.MeasuredImageToMesh <= report.ImageToMeshBound + slack && *q.MeasuredMeshToImage <= report.MeshToImageBound + slack);
-  return certified && sampled && distances;
+  // The measured corners come from differences of points: a little round-off more.
+  const bool corners = q.CornerAngleBound <= 0.0 ||
+    (q.MinimumCornerAngle >= q.CornerAngleBound - 1e-9 &&
+      (!q.MeasuredMinimumCornerAngle || *q.MeasuredMinimumCornerAngle >= q.CornerAngleBound - 1e-6));
+  return certified && sampled && distances && corners;
 }
 
 void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
@@ -79,6 +87,14 @@ void PrintQuadraticSummary(const RunReport& report, std::ostream& out)
     out << ", " << FormatFixed(*q.SampledMinimumScaledJacobian, 3) << " sampled";
   out << "; certified lower bounds of the cells written:\n";
   PrintJacobianHistogram(q.ScaledJacobianHistogram, out);
+  if (q.CornerAngleBound > 0.0)
+  {
+    out << "  corner angles (dihedral, between edge tangents): smallest " << FormatFixed(q.MinimumCornerAngle, 2);
+    if (q.MeasuredMinimumCornerAngle)
+      out << " (" << FormatFixed(*q.MeasuredMinimumCornerAngle, 2) << " measured)";
+    out << " deg, bound " << FormatFixed(q.CornerAngleBound, 2) << "; " << q.CellsFailedCornerAngle
+        << " cells had corners pulled back\n";
+  }
   if (q.MeasuredImageToMesh)
     out << "  curved interfaces: h(I,M) " << FormatFixed(*q.MeasuredImageToMesh, 3) << ", h(M,I) "
         << FormatFixed(*q.MeasuredMeshToImage, 3) << " voxels measured (bounds " << FormatFixed(report.ImageToMeshBound, 3)
@@ -128,6 +144,10 @@ void WriteQuadraticJson(const RunReport& report, JsonWriter& j)
   j.Key("scaled_jacobian_histogram");
   WriteJacobianHistogramJson(q.ScaledJacobianHistogram, j);
   optional("sampled_minimum_scaled_jacobian", q.SampledMinimumScaledJacobian);
+  j.Key("corner_angle_bound_degrees").Number(q.CornerAngleBound);
+  j.Key("minimum_corner_angle_degrees").Number(q.MinimumCornerAngle);
+  optional("measured_minimum_corner_angle_degrees", q.MeasuredMinimumCornerAngle);
+  j.Key("cells_failed_corner_angle").Integer(q.CellsFailedCornerAngle);
   optional("measured_image_to_mesh", q.MeasuredImageToMesh);
   optional("measured_mesh_to_image", q.MeasuredMeshToImage);
   optional("measure_resolution", q.MeasureResolution);

@@ -71,8 +71,12 @@ struct QuadraticEntry
   long long CellsFailedScaledJacobian = 0, FacesFailedDistance = 0;
   long long Rounds = 0, UntangledEdges = 0, PinnedEdges = 0;
   double ScaledJacobianBound = 0.0, CertifiedMinimumScaledJacobian = 0.0;
+  /// Corner angles (QuadraticCorners.h), degrees: the bound (0: none) and the smallest, exact.
+  double CornerAngleBound = 0.0, MinimumCornerAngle = 180.0;
+  long long CellsFailedCornerAngle = 0;
   /// Present when measured (independently of the curver's certificates).
   std::optional<double> SampledMinimumScaledJacobian, MeasuredImageToMesh, MeasuredMeshToImage, MeasureResolution;
+  std::optional<double> MeasuredMinimumCornerAngle;
   std::optional<double> Voxels, MisclassifiedLinear, MisclassifiedQuadratic;
 };
 

@@ -23,7 +23,7 @@
 // TestCurverProperties.
 // --order2 (3D only): mesher, decimator and the quadratic curver; the quadratic
 // mesh must keep every guarantee of TestQuadraticCurver (QuadraticGuarantees.h).
-// With LABELMESHER_SCAN_UNCERTIFIED=distances (or =jacobians) in the
+// With LABELMESHER_SCAN_UNCERTIFIED=distances (or =jacobians, =corners) in the
 // environment the curver skips that certificate (to find images that show it
 // is needed).
 // smooth: GenerateRandomLabelImageWithDescription(seed, dimension) (the images
@@ -62,6 +62,7 @@ int main(int argc, char** argv)
   {
     quadraticCurver.CertifyDistances = std::string(uncertified) != "distances";
     quadraticCurver.CertifyValidity = std::string(uncertified) != "jacobians";
+    quadraticCurver.CertifyCorners = std::string(uncertified) != "corners";
   }
   quadraticCurver.MinimumScaledJacobian = testing::kQuadraticScaledJacobian;
   StreamingParameters streaming;

@@ -191,9 +191,14 @@ TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
   const double certified = quadratic->GetFieldData()->GetArray(arrays::CertifiedMinimumScaledJacobian)->GetComponent(0, 0);
   const double distance = quadratic->GetFieldData()->GetArray(arrays::MeasuredImageToMeshDistance)->GetComponent(0, 0);
   const double back = quadratic->GetFieldData()->GetArray(arrays::MeasuredMeshToImageDistance)->GetComponent(0, 0);
+  const double corner = quadratic->GetFieldData()->GetArray(arrays::CertifiedMinimumCornerAngle)->GetComponent(0, 0);
+  const double measuredCorner = quadratic->GetFieldData()->GetArray(arrays::MeasuredMinimumCornerAngle)->GetComponent(0, 0);
+  EXPECT_EQ(quadratic->GetFieldData()->GetArray(arrays::CornerAngleBound)->GetComponent(0, 0), 15.0);
+  EXPECT_TRUE(Contains(json, "\"corner_angle_bound_degrees\": 15")) << json;
   for (const auto& c : { std::make_pair(arrays::CertifiedMinimumScaledJacobian, 0.05),
          std::make_pair(arrays::SampledMinimumScaledJacobian, 0.05), std::make_pair(arrays::MeasuredImageToMeshDistance, 2.5),
-         std::make_pair(arrays::MeasuredMeshToImageDistance, 2.5) })
+         std::make_pair(arrays::MeasuredMeshToImageDistance, 2.5), std::make_pair(arrays::CertifiedMinimumCornerAngle, 14.9),
+         std::make_pair(arrays::MeasuredMinimumCornerAngle, 14.9) })
   {
     Spoil(quadratic, c.first, c.second);
     EXPECT_FALSE(report->GetGuaranteesHold()) << c.first;
@@ -201,6 +206,8 @@ TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
     Spoil(quadratic, arrays::SampledMinimumScaledJacobian, sampled);
     Spoil(quadratic, arrays::MeasuredImageToMeshDistance, distance);
     Spoil(quadratic, arrays::MeasuredMeshToImageDistance, back);
+    Spoil(quadratic, arrays::CertifiedMinimumCornerAngle, corner);
+    Spoil(quadratic, arrays::MeasuredMinimumCornerAngle, measuredCorner);
     ASSERT_TRUE(report->GetGuaranteesHold()) << c.first << " restored";
   }
 }

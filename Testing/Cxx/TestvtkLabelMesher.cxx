@@ -464,6 +464,13 @@ TEST(vtkLabelMesher, OrderTwoAddsCertifiedQuadraticTetrahedraOnPortTwo)
   ASSERT_NE(scaled, nullptr);
   for (vtkIdType c = 0; c < scaled->GetNumberOfTuples(); ++c)
     ASSERT_GE(scaled->GetTuple1(c), bound) << "cell " << c;
+  // The corners keep the decimator's angle (MinimumAngle, 15 degrees by default).
+  EXPECT_EQ(fd->GetArray(arrays::CornerAngleBound)->GetTuple1(0), mesher->GetMinimumAngle());
+  EXPECT_GE(fd->GetArray(arrays::MeasuredMinimumCornerAngle)->GetTuple1(0), mesher->GetMinimumAngle() - 1e-6);
+  vtkDataArray* corners = quadratic->GetCellData()->GetArray(arrays::CornerAngle);
+  ASSERT_NE(corners, nullptr);
+  for (vtkIdType c = 0; c < corners->GetNumberOfTuples(); ++c)
+    ASSERT_GE(corners->GetTuple1(c), mesher->GetMinimumAngle() - 1e-9) << "cell " << c;
 }
 
 TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageOrWithoutDecimationIsOneError)

@@ -64,6 +64,42 @@ double SampledScaledJacobian(const std::array<Point3, 10>& x, int n, double& sma
   return hi > 0.0 ? lo / hi : -1.0;
 }
 
+double MeasuredCornerAngle(const std::array<Point3, 10>& x)
+{
+  constexpr double t = 0.25;
+  double smallest = 180.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    std::array<double, 4> corner{ 0.0, 0.0, 0.0, 0.0 };
+    corner[static_cast<std::size_t>(k)] = 1.0;
+    const Point3 origin = EvaluateQuadraticTetra(x, corner);
+    Point3 tangent[3];
+    for (int other = 0, n = 0; other < 4; ++other)
+    {
+      if (other == k)
+        continue;
+      auto along = [&](double s) {
+        std::array<double, 4> l = corner;
+        l[static_cast<std::size_t>(k)] = 1.0 - s;
+        l[static_cast<std::size_t>(other)] = s;
+        return Scale(Sub(EvaluateQuadraticTetra(x, l), origin), 1.0 / s);
+      };
+      tangent[n++] = Sub(Scale(along(t), 2.0), along(2.0 * t));
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      // The faces through tangent i are spanned by it and each of the other two.
+      const Point3 a = Cross(tangent[i], tangent[(i + 1) % 3]);
+      const Point3 b = Cross(tangent[i], tangent[(i + 2) % 3]);
+      const double norms = Norm(a) * Norm(b);
+      const double angle =
+        norms > 0.0 ? std::acos(std::clamp(Dot(a, b) / norms, -1.0, 1.0)) * 180.0 / 3.14159265358979323846 : 0.0;
+      smallest = std::min(smallest, angle);
+    }
+  }
+  return smallest;
+}
+
 double RefinementTolerance(const QuadraticMesh& mesh, int n)
 {
   double bend = 0.0;

@@ -46,6 +46,13 @@ double RefinementTolerance(const QuadraticMesh& mesh, int n);
 /// `smallest` (> 0 where valid).
 double SampledScaledJacobian(const std::array<Point3, 10>& nodes, int n, double& smallest);
 
+/// The smallest dihedral angle, degrees, of the tangent trihedra at the four
+/// corners (the curver's corner angles, Quadratic/QuadraticCorners.h), measured
+/// independently of it: each tangent from points of the map along the edge
+/// (2 D(t) − D(2t) with D(t) = (x(t) − x(0)) / t, exact for a quadratic
+/// curve), each angle between the normals of the trihedron's faces.
+double MeasuredCornerAngle(const std::array<Point3, 10>& nodes);
+
 struct VoxelAccuracy
 {
   std::size_t Voxels = 0;        ///< voxels of the image

@@ -15,10 +15,13 @@
  *   - validity and quality: every curved cell's min det J / max det J at least
  *     MinimumScaledJacobian, by the Bernstein coefficients of det J
  *     (TetraJacobian.h; 0 asks for det J > 0 alone);
+ *   - corners: every corner's dihedral angles at least the linear mesh's angle
+ *     bound (QuadraticCorners.h);
  *   - both distance bounds on every curved interface face (QuadraticFidelity.h);
- * and the curved interface edges of each failing face and cell are pulled
- * back towards straight (offset × 1/2, 1/4, then 0); a failing cell with no
- * curved interface edge of its own gets its interior edges pinned straight. Straight
+ * and the curved interface edges of each failing face and cell (of a failing
+ * corner: those through it) are pulled back towards straight (offset × 1/2,
+ * 1/4, then 0; for a corner alone × 3/4 a round, 0 below 1/10); a failing cell with no curved interface edge of its own gets
+ * its interior edges pinned straight (a corner: those through it). Straight
  * cells are the linear mesh's, which holds every bound, so the loop ends, at
  * the latest with the linear mesh.
  *
@@ -51,18 +54,28 @@ struct QuadraticParameters
   double ImageToMeshDistance = 2.0; ///< h(I, M) the curved interfaces keep, voxels
   double MeshToImageDistance = 2.0; ///< h(M, I), voxels
   double MinimumScaledJacobian = 0.1; ///< certified min det J / max det J of every cell, [0, 1)
+  /// Every corner of every curved cell keeps this angle (degrees, the dihedral angles of its
+  /// tangent trihedron, QuadraticCorners.h), or the linear mesh's smallest dihedral angle when
+  /// that is smaller (QuadraticResult::CornerAngleBound); 0: no corner bound. The linear
+  /// mesh's own bound is the natural value (vtkLabelMesher passes its MinimumAngle).
+  double MinimumCornerAngle = 15.0;
   double Tolerance = 1.0 / 64.0; ///< flattening tolerance of the distance test, voxels
   InterfaceFitOptions Fit;
   bool Untangle = true; ///< move interior mid-nodes by elasticity (off: interior edges stay straight)
   /// For tests only: switch a certificate off to show that the checks catch what it prevents.
   bool CertifyValidity = true;
   bool CertifyDistances = true;
+  bool CertifyCorners = true;
 };
 
 struct QuadraticResult
 {
   QuadraticMesh Mesh;
   std::vector<double> ScaledJacobian; ///< per cell, certified lower bound (1: straight)
+  std::vector<double> CornerAngle;    ///< per cell, its smallest corner angle, degrees (straight: its dihedral)
+  /// The corner angle every cell keeps: MinimumCornerAngle, or the linear mesh's smallest dihedral
+  /// angle when that is smaller; 0 with the bound off.
+  double CornerAngleBound = 0.0;
   std::size_t FittedEdges = 0;      ///< interface edges given a fitted mid-node
   std::size_t CurvedEdges = 0;      ///< still curved at the end
   std::size_t ShortenedEdges = 0;   ///< pulled back at least once
@@ -72,6 +85,7 @@ struct QuadraticResult
   std::size_t Rounds = 0;
   std::size_t CellsFailedQuality = 0;  ///< cells that failed the Jacobian bound in some round
   std::size_t FacesFailedDistance = 0; ///< faces that failed a distance bound in some round
+  std::size_t CellsFailedCornerAngle = 0; ///< cells with a corner below the bound in some round
   double FitSeconds = 0.0, CertifySeconds = 0.0;
 };
 

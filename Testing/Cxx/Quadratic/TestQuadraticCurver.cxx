@@ -7,7 +7,10 @@
 //   - through mesher, decimator and curver on seeded random 3D images (both
 //     generators, distance bounds 0-3, angles drawn): every guarantee measured
 //     independently (QuadraticGuarantees.h), and each of the curver's two
-//     certificates, switched off, lets the checks find a violation;
+//     certificates (and the corner bound), switched off, lets the checks find a
+//     violation;
+//   - corner angles: a straight cell's are its dihedral angles, and the
+//     curver's exact tangents agree with tangents from points of the map;
 //   - on smooth shapes (sphere, torus, Cassini volume): the same, and fewer
 //     misclassified voxels than the linear mesh.
 // A failure prints the seed and what its image contains.
@@ -15,6 +18,7 @@
 #include "Checks/QuadraticVolume.h"
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
+#include "Quadratic/QuadraticCorners.h"
 #include "Quadratic/QuadraticFidelity.h"
 #include "Quadratic/TetraJacobian.h"
 #include "QuadraticGuarantees.h"
@@ -48,6 +52,37 @@ TEST(TetraJacobian, StraightCellHasSixTimesItsVolumeEverywhere)
   for (double c : JacobianCoefficients(nodes))
     EXPECT_NEAR(c, 6.0, 1e-12);
   EXPECT_NEAR(CertifiedScaledJacobian(nodes), 1.0, 1e-12);
+}
+
+TEST(QuadraticCorners, StraightCellCornersAreItsDihedralAngles)
+{
+  const auto nodes = StraightTetra({ 0, 0, 0 }, { 2, 0.3, 0 }, { 0.4, 3, 0 }, { 0.2, 0.1, 1 });
+  EXPECT_NEAR(SmallestCornerAngle(nodes), MinimumDihedralAngle(nodes[0], nodes[1], nodes[2], nodes[3]), 1e-9);
+  // The right corner of the unit tetrahedron: three right angles.
+  for (double angle : CornerDihedralAngles(StraightTetra({ 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }), 0))
+    EXPECT_NEAR(angle, 90.0, 1e-12);
+}
+
+TEST(QuadraticCorners, ExactTangentsAgreeWithPointsOfTheMap)
+{
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> offset(-0.15, 0.15);
+  double lowest = 180.0;
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    auto nodes = StraightTetra({ 0, 0, 0 }, { 1, 0, 0 }, { 0.2, 0.9, 0 }, { 0.1, 0.2, 0.8 });
+    for (int e = 4; e < 10; ++e)
+      nodes[e] = Add(nodes[e], { offset(random), offset(random), offset(random) });
+    const double exact = SmallestCornerAngle(nodes);
+    EXPECT_NEAR(exact, MeasuredCornerAngle(nodes), 1e-7) << trial;
+    lowest = std::min(lowest, exact);
+  }
+  // Curving bends corners below the straight cell's (whose smallest is about 35 degrees).
+  EXPECT_LT(lowest, 20.0);
+  // A curved edge leaving its corner along another edge folds the corner flat: angle 0.
+  auto folded = StraightTetra({ 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 });
+  folded[4] = { 0.25, 0.5, 0.0 }; // edge 0-1 leaves corner 0 along 4m - 3a - b = (0, 2, 0), edge 0-2's direction
+  EXPECT_NEAR(CornerDihedralAngles(folded, 0)[0], 0.0, 1e-9);
 }
 
 TEST(TetraJacobian, CoefficientsBoundSampledDeterminants)
@@ -256,6 +291,14 @@ TEST(QuadraticProperties, WithoutTheJacobianCertificateSomeCellFallsBelowTheBoun
   curver.CertifyValidity = false;
   curver.CertifyDistances = false; // fitted curves as they come, so that some fold their cells
   EXPECT_GT(ViolationsWithTheCurver("det J", curver), 0);
+}
+
+TEST(QuadraticProperties, WithoutTheCornerCertificateSomeCornerFallsBelowTheAngle)
+{
+  QuadraticParameters curver;
+  curver.MinimumScaledJacobian = testing::kQuadraticScaledJacobian;
+  curver.CertifyCorners = false;
+  EXPECT_GT(ViolationsWithTheCurver("corner angle", curver), 0);
 }
 
 struct SmoothShape

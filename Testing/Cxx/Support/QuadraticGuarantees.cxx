@@ -3,6 +3,9 @@
 #include "QuadraticGuarantees.h"
 
 #include "Checks/QuadraticVolume.h"
+#include "Support/Geometry.h"
+
+#include <algorithm>
 
 #include <sstream>
 
@@ -21,6 +24,8 @@ std::vector<std::string> ViolatedQuadraticGuarantees(const LabelImage& image, co
   parameters.MeshToImageDistance = mesher.MeshToImageDistance;
   if (!curver)
     parameters.MinimumScaledJacobian = kQuadraticScaledJacobian;
+  parameters.MinimumCornerAngle = decimation.MinimumAngle;
+  out.CornerAngle = decimation.MinimumAngle;
   SimplexMesh linear;
   try
   {
@@ -63,6 +68,28 @@ std::vector<std::string> ViolatedQuadraticMeshGuarantees(const LabelImage& image
     {
       fail("cell " + std::to_string(c) + ": certified scaled Jacobian " + std::to_string(out.Result.ScaledJacobian[c]) +
         " above the sampled " + std::to_string(ratio));
+      break;
+    }
+  }
+
+  // Corners: at least the asked angle, or the linear mesh's smallest dihedral angle if smaller
+  // (the straight mesh is the curver's last resort).
+  double linearSmallest = 180.0;
+  for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
+  {
+    const std::int64_t* v = linear.Cell(c);
+    linearSmallest = std::min(linearSmallest,
+      geometry::MinimumDihedralAngle(linear.Points[static_cast<std::size_t>(v[0])], linear.Points[static_cast<std::size_t>(v[1])],
+        linear.Points[static_cast<std::size_t>(v[2])], linear.Points[static_cast<std::size_t>(v[3])]));
+  }
+  const double cornerBound = std::min(out.CornerAngle, linearSmallest);
+  for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
+  {
+    const double corner = MeasuredCornerAngle(mesh.Nodes(c));
+    if (corner < cornerBound - 1e-6)
+    {
+      fail("cell " + std::to_string(c) + ": corner angle " + std::to_string(corner) + " below " +
+        std::to_string(cornerBound) + " degrees");
       break;
     }
   }

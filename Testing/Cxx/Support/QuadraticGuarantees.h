@@ -9,7 +9,8 @@
  * the image and the mesher's distance bounds. Asserted independently of the
  * curver's certificates (Checks/QuadraticVolume.h): det J sampled on a dense
  * barycentric lattice of every cell (positive, and its min over max at least
- * the bound); both distance bounds per material on the boundary faces
+ * the bound); every corner's angles (tangents from points of the map) at
+ * least the decimator's angle; both distance bounds per material on the boundary faces
  * flattened at step 1/8 (allowing that flattening's stated tolerance and the
  * measure's resolution); the image's topology per material and conformity on
  * the cells refined into linear ones.
@@ -32,6 +33,9 @@ namespace testing
 struct QuadraticRun
 {
   QuadraticResult Result;
+  /// The angle the corners must keep, degrees (the decimator's; ViolatedQuadraticGuarantees sets
+  /// it): asserted as the smaller of it and the linear mesh's smallest dihedral angle.
+  double CornerAngle = 15.0;
   std::size_t MisclassifiedLinear = 0; ///< voxels, of the decimated mesh
   std::size_t MisclassifiedCurved = 0; ///< voxels, of the quadratic mesh refined at step 1/4
 };

@@ -20,7 +20,8 @@
  *   - both distance bounds on every curved interface face (QuadraticFidelity.h);
  * and the curved interface edges of each failing face and cell (of a failing
  * corner: those through it) are pulled back towards straight (offset × 1/2,
- * 1/4, then 0; for a corner alone × 3/4 a round, 0 below 1/10); a failing cell with no curved interface edge of its own gets
+ * 1/4, then 0; for a corner alone by the largest of 0.9, 0.8, ..., 0 under
+ * which it holds, straight below 1/20 of the fit); a failing cell with no curved interface edge of its own gets
  * its interior edges pinned straight (a corner: those through it). Straight
  * cells are the linear mesh's, which holds every bound, so the loop ends, at
  * the latest with the linear mesh.

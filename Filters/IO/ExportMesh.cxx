@@ -65,6 +65,84 @@ void GroupRuns(const std::vector<Key>& sortedKeys, std::vector<Key>& keys, std::
   }
 }
 
+/// Faces (NodesPerFace() nodes each) and the pair each separates, sorted by pair (stably) into
+/// out.Faces, out.Interfaces and out.InterfaceFaces.
+void GroupFacesByPair(const std::vector<ExportMesh::Pair>& pairs, const std::vector<std::int64_t>& faces, ExportMesh& out)
+{
+  const auto faceNodes = static_cast<std::size_t>(out.NodesPerFace());
+  std::vector<std::size_t> faceOrder(pairs.size());
+  std::iota(faceOrder.begin(), faceOrder.end(), std::size_t{ 0 });
+  std::stable_sort(faceOrder.begin(), faceOrder.end(), [&](std::size_t a, std::size_t b) { return pairs[a] < pairs[b]; });
+  std::vector<ExportMesh::Pair> sortedPairs;
+  sortedPairs.reserve(pairs.size());
+  out.Faces.reserve(faces.size());
+  for (std::size_t f : faceOrder)
+  {
+    sortedPairs.push_back(pairs[f]);
+    out.Faces.insert(out.Faces.end(), faces.begin() + static_cast<std::ptrdiff_t>(f * faceNodes),
+      faces.begin() + static_cast<std::ptrdiff_t>((f + 1) * faceNodes));
+  }
+  GroupRuns(sortedPairs, out.Interfaces, out.InterfaceFaces);
+}
+
+/// The interfaces of a quadratic tetrahedral mesh as 6-node triangles (corners, then the
+/// mid-nodes of edges 0-1, 1-2, 2-0: VTK's and Gmsh's order), taken from its cells: every face
+/// between cells of two materials, and every face of one cell alone (against the background or
+/// the image's box: material 0), as the linear interface surface has them. Oriented out of the
+/// cell of the smaller material (cells are sorted by material), in face order of first use.
+void QuadraticInterfaceFaces(ExportMesh& out)
+{
+  // The faces of a positively oriented tetrahedron, outward: corners, then the cell's node
+  // slots (4-9: edges 01, 12, 20, 03, 13, 23) of the edges 0-1, 1-2, 2-0 of the face.
+  static constexpr int kFace[4][6] = { { 1, 2, 3, 5, 9, 8 }, { 0, 3, 2, 7, 9, 6 }, { 0, 1, 3, 4, 8, 7 },
+    { 0, 2, 1, 6, 5, 4 } };
+  struct Use
+  {
+    std::array<std::int64_t, 3> Key;
+    std::size_t Cell;
+    int Face;
+  };
+  std::vector<Use> uses;
+  uses.reserve(out.NumberOfCells() * 4);
+  for (std::size_t c = 0; c < out.NumberOfCells(); ++c)
+    for (int f = 0; f < 4; ++f)
+    {
+      std::array<std::int64_t, 3> key;
+      for (int k = 0; k < 3; ++k)
+        key[static_cast<std::size_t>(k)] = out.Cells[c * 10 + static_cast<std::size_t>(kFace[f][k])];
+      std::sort(key.begin(), key.end());
+      uses.push_back({ key, c, f });
+    }
+  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
+    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+  });
+  std::vector<ExportMesh::Pair> pairs;
+  std::vector<std::int64_t> faces;
+  std::vector<std::pair<std::size_t, std::size_t>> found; // (cell, face) of each, then sorted
+  for (std::size_t u = 0; u < uses.size();)
+  {
+    std::size_t next = u + 1;
+    while (next < uses.size() && uses[next].Key == uses[u].Key)
+      ++next;
+    const std::int32_t first = out.CellMaterial[uses[u].Cell];
+    const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Cell] : 0;
+    if (next - u < 2 || first != second)
+      found.emplace_back(uses[u].Cell * 4 + static_cast<std::size_t>(uses[u].Face), static_cast<std::size_t>(second));
+    u = next;
+  }
+  std::sort(found.begin(), found.end());
+  for (const auto& [slot, other] : found)
+  {
+    const std::size_t c = slot / 4;
+    const int f = static_cast<int>(slot % 4);
+    const std::int32_t a = out.CellMaterial[c], b = static_cast<std::int32_t>(other);
+    pairs.push_back({ std::min(a, b), std::max(a, b) });
+    for (int k = 0; k < 6; ++k)
+      faces.push_back(out.Cells[c * 10 + static_cast<std::size_t>(kFace[f][k])]);
+  }
+  GroupFacesByPair(pairs, faces, out);
+}
+
 /// The cubic Bezier triangles' control points (VTK order: corners, two per edge, the centre) moved
 /// to the Lagrange nodes of the same cubic map, at the barycentric points (i, j, k) / 3. A point
 /// on an edge depends on that edge's four control points alone, so cells sharing the edge give it
@@ -167,7 +245,8 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
   }
   GroupRuns(out.CellMaterial, out.Materials, out.MaterialCells);
 
-  if (interfaces && interfaces->GetNumberOfCells() > 0)
+  // The filters' interface surface is linear; a quadratic mesh's interfaces come from its cells.
+  if (interfaces && interfaces->GetNumberOfCells() > 0 && out.Order != 2)
   {
     vtkDataArray* sides = interfaces->GetCellData()->GetArray("Materials");
     if (!sides || sides->GetNumberOfComponents() != 2)
@@ -206,21 +285,11 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
       const auto b = static_cast<std::int32_t>(sides->GetComponent(f, 1));
       pairs[static_cast<std::size_t>(f)] = { std::min(a, b), std::max(a, b) };
     }
-    std::vector<std::size_t> faceOrder(pairs.size());
-    std::iota(faceOrder.begin(), faceOrder.end(), std::size_t{ 0 });
-    std::stable_sort(faceOrder.begin(), faceOrder.end(), [&](std::size_t a, std::size_t b) { return pairs[a] < pairs[b]; });
-    std::vector<ExportMesh::Pair> sortedPairs;
-    sortedPairs.reserve(pairs.size());
-    out.Faces.reserve(faces.size());
-    for (std::size_t f : faceOrder)
-    {
-      sortedPairs.push_back(pairs[f]);
-      for (int k = 0; k < faceNodes; ++k)
-      {
-        out.Faces.push_back(faces[f * static_cast<std::size_t>(faceNodes) + static_cast<std::size_t>(k)]);
-      }
-    }
-    GroupRuns(sortedPairs, out.Interfaces, out.InterfaceFaces);
+    GroupFacesByPair(pairs, faces, out);
+  }
+  else if (out.Order == 2)
+  {
+    QuadraticInterfaceFaces(out);
   }
 
   if (out.Dimension == 2 && !out.Points.empty())

@@ -56,7 +56,9 @@ struct ExportMesh
   int FlatAxis = -1;
 
   int NodesPerCell() const { return this->Order > 1 ? 10 : this->Dimension + 1; }
-  int NodesPerFace() const { return this->Dimension; }
+  /// Interface faces: segments (2D), triangles, or 6-node triangles (corners, then the
+  /// mid-nodes of edges 0-1, 1-2, 2-0) of a quadratic mesh.
+  int NodesPerFace() const { return this->Order == 2 ? 6 : this->Dimension; }
   std::size_t NumberOfCells() const { return this->CellMaterial.size(); }
   std::size_t NumberOfFaces() const { return this->Faces.size() / static_cast<std::size_t>(this->NodesPerFace()); }
   /// The largest material label (0 when there are no cells).
@@ -74,7 +76,8 @@ double PlanarArea(const ExportMesh& mesh, const std::int64_t* cell);
 /// Gathers `mesh` (VTK_TETRA, VTK_TRIANGLE, VTK_BEZIER_TRIANGLE (cubic) or VTK_QUADRATIC_TETRA
 /// cells, one type, with cell array Material)
 /// and `interfaces` (triangles or lines with cell array Materials; may be null:
-/// no faces) whose points must be points of `mesh`. Throws WriteError when they
+/// no faces) whose points must be points of `mesh`. For quadratic tetrahedra the interfaces are
+/// taken from the cells instead, as 6-node triangles (`interfaces` is not used). Throws WriteError when they
 /// are not (curved cells, mixed types, an interface point off the mesh).
 ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, const MaterialTable& table);
 

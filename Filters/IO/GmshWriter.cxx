@@ -15,8 +15,8 @@ namespace io
 namespace
 {
 
-constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshQuadraticTetrahedron = 11,
-              GmshCubicTriangle = 21;
+constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshQuadraticTriangle = 9,
+              GmshQuadraticTetrahedron = 11, GmshCubicTriangle = 21;
 
 int CellType(const ExportMesh& mesh)
 {
@@ -36,6 +36,8 @@ const int* NodeOrder(const ExportMesh& mesh)
 }
 int FaceType(const ExportMesh& mesh)
 {
+  if (mesh.Order == 2)
+    return GmshQuadraticTriangle; // 6 nodes in VTK's order
   return mesh.Dimension == 3 ? GmshTriangle : GmshLine;
 }
 

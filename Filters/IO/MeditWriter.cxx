@@ -82,7 +82,8 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
   const auto faceNodes = static_cast<std::size_t>(mesh.NodesPerFace());
   if (mesh.NumberOfFaces() > 0)
   {
-    text.Text(mesh.Dimension == 3 ? "Triangles\n" : "Edges\n").Int(static_cast<std::int64_t>(mesh.NumberOfFaces())).Char('\n');
+    // TrianglesP2: corners, then the mid-nodes of edges 12, 23, 31 (VTK's order, as Gmsh reads it).
+    text.Text(mesh.Order == 2 ? "TrianglesP2\n" : mesh.Dimension == 3 ? "Triangles\n" : "Edges\n").Int(static_cast<std::int64_t>(mesh.NumberOfFaces())).Char('\n');
     for (std::size_t i = 0; i < mesh.Interfaces.size(); ++i)
     {
       const std::int64_t reference = MeditInterfaceReference(mesh, i);

@@ -171,8 +171,9 @@ def case_export_quadratic():
     """`mesh --order 2` writes quadratic tetrahedra: .vtu, .msh (Gmsh's 10-node tetrahedra, its own
     node order), .inp (C3D10) read back by meshio as the same cells on the same nodes with every
     material, .mesh (Medit's TetrahedraP2) read by Gmsh into the same; det J positive and the
-    scaled Jacobian at least 0.1 from the written nodes; gmsh -check accepts the .msh; the report's
-    certified figures and fewer misclassified voxels."""
+    scaled Jacobian at least 0.1 from the written nodes; gmsh -check accepts the .msh; the interfaces
+    as 6-node triangles (Gmsh's, Medit's TrianglesP2) on the cells' faces; the report's certified
+    figures and fewer misclassified voxels."""
     labels = np.zeros((18, 20, 22), dtype=np.uint8)
     z, y, x = np.mgrid[0:18, 0:20, 0:22]
     labels[(x - 8.5) ** 2 + (y - 9.5) ** 2 + (z - 8.5) ** 2 <= 36] = 2
@@ -225,6 +226,37 @@ def case_export_quadratic():
     elementary = np.concatenate([from_medit.cell_data["gmsh:geometrical"][i] for i, c in enumerate(from_medit.cells)
                                  if c.type == "tetra10"]).astype(np.int64)
     assert sorted(elementary.tolist()) == sorted(materials.tolist()), "materials differ in the .mesh"
+    # The interfaces as 6-node triangles: exactly the faces of the written cells between two
+    # materials or of one cell alone (against the background), each with the three mid-nodes of
+    # its edges; the .msh groups them by pair (named "a|b"), the .mesh as TrianglesP2 (read by
+    # Gmsh) into the same faces.
+    def face_key(points, nodes):
+        # Corners 0-2, then the mid-nodes of edges 0-1, 1-2, 2-0: the same key in either
+        # orientation, and only when each mid-node belongs to its edge.
+        p = [np.round(points[n], 9).tobytes() for n in nodes]
+        return frozenset((frozenset((p[i], p[(i + 1) % 3])), p[3 + i]) for i in range(3))
+    face_slots = ((1, 2, 3, 5, 9, 8), (0, 3, 2, 7, 9, 6), (0, 1, 3, 4, 8, 7), (0, 2, 1, 6, 5, 4))
+    uses, counts = {}, {}
+    for c, cell in enumerate(ref_cells):
+        for slots in face_slots:
+            key = face_key(reference.points, cell[list(slots)])
+            uses.setdefault(key, set()).add(int(materials[c]))
+            counts[key] = counts.get(key, 0) + 1
+    expected = {}
+    for key, found in uses.items():
+        pair = tuple(sorted(found | ({0} if counts[key] == 1 else set())))
+        if len(pair) == 2:
+            expected[key] = pair
+    def faces_of(mesh, tag_key):
+        return {face_key(mesh.points, face): int(tag) for i, c in enumerate(mesh.cells) if c.type == "triangle6"
+                for face, tag in zip(c.data, mesh.cell_data[tag_key][i])}
+    msh_faces = faces_of(meshes[msh], "gmsh:physical")
+    assert len(expected) > 0 and set(msh_faces) == set(expected), \
+        "the .msh interfaces are not the cells' faces with their mid-nodes (%d, %d)" % (len(msh_faces), len(expected))
+    names = {int(v[0]): k for k, v in meshes[msh].field_data.items() if v[1] == 2}
+    for key, pair in expected.items():
+        assert names[msh_faces[key]] == "%s|%s" % tuple("label_%d" % m for m in pair), (names[msh_faces[key]], pair)
+    assert set(faces_of(from_medit, "gmsh:geometrical")) == set(expected), "the .mesh interfaces differ"
     # Formats without quadratic tetrahedra, and bad requests, are refused before meshing.
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.stl")), ".inp or .mesh only", 2)
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.vtp")), ".inp or .mesh only", 2)

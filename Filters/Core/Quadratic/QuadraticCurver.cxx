@@ -183,8 +183,14 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
     std::set<std::size_t> failing; // interface edges to pull back
     std::map<std::size_t, double> cornerFactor; // those a corner alone blames, and how far
     bool pinned = false;
+    const double roundStart = result.Rounds == 1 ? 0.0 : 0.5 + 0.5 * done;
     for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
     {
+      // The first round certifies every cell and is most of a run: its progress moves with them.
+      if (c % 4096 == 4095 &&
+        !observer.Report("quadratic certify",
+          result.Rounds == 1 ? 0.5 * static_cast<double>(c) / static_cast<double>(mesh.NumberOfCells()) : roundStart))
+        throw AbortRequested{};
       bool moved = false;
       for (int e = 0; e < 6; ++e)
         moved = moved || edgeMoved[static_cast<std::size_t>(mesh.CellEdges[c * 6 + e])];
@@ -274,7 +280,8 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
     // that changes nothing, which has tested every face moved since the last test).
     if (parameters.CertifyDistances && failing.empty() && cornerFactor.empty() && !pinned)
     {
-      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds, &facePending))
+      const auto keepGoing = [&] { return observer.Report("quadratic certify", result.Rounds == 1 ? 0.5 : roundStart); };
+      for (std::size_t f : FacesBreakingDistances(mesh, faces, image, bounds, &facePending, keepGoing))
       {
         failedFaces.insert(f);
         for (std::int64_t e : faces[f].Edges)

@@ -8,6 +8,7 @@
 #include "Support/ParallelChunks.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <unordered_map>
 
@@ -176,9 +177,18 @@ std::vector<std::array<Point3, 3>> FlattenFace(const std::array<Point3, 6>& node
 }
 
 std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
-  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed)
+  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed,
+  const std::function<bool()>& keepGoing)
 {
   auto retest = [&](std::size_t f) { return !changed || (*changed)[f]; };
+  // Asked between chunks by the calling thread only (it alone may talk to an observer); once it
+  // says stop, the other chunks end too and the call throws.
+  std::atomic<bool> stop{ false };
+  auto stopping = [&](unsigned thread) {
+    if (thread == 0 && keepGoing && !stop && !keepGoing())
+      stop = true;
+    return stop.load();
+  };
   const double T = bounds.Tolerance;
   std::vector<char> failing(faces.size(), 0);
   // Curved faces' flattening levels (-1: none within 4^5); the sub-triangles are made where they
@@ -208,7 +218,9 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
   // Mesh to image: each sub-triangle near the image boundary of each non-zero material beside it.
   const double meshReach = bounds.MeshToImage - T;
   // Faces are independent here (each writes its own flag): both cores take them.
-  ParallelChunks(curved.size(), 64, [&](unsigned, std::size_t begin, std::size_t end) {
+  ParallelChunks(curved.size(), 64, [&](unsigned thread, std::size_t begin, std::size_t end) {
+  if (stopping(thread))
+    return;
   for (std::size_t index = begin; index < end; ++index)
   {
     const std::size_t f = curved[index];
@@ -246,6 +258,9 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
     }
   }
   });
+
+  if (stop)
+    throw AbortRequested{};
 
   // Image to mesh: voxel faces of m near a curved face of m, against m's faces within reach.
   const double h = bounds.ImageToMesh;
@@ -310,6 +325,8 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
     // Each voxel face against m's faces within reach; independent, so both cores take them, and
     // each thread lists the curved faces to blame (flags: the order does not matter).
     ParallelChunks(voxelFaces.size(), 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
+      if (stopping(thread))
+        return;
       std::vector<ConvexPiece> straight, all;
       std::vector<std::size_t> near; // curved faces whose boxes reach the voxel face
       // Consecutive voxel faces are neighbours (sorted by position): the faces near them repeat.
@@ -375,6 +392,8 @@ std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const
         blamed[thread].insert(blamed[thread].end(), near.begin(), near.end());
       }
     });
+    if (stop)
+      throw AbortRequested{};
     for (std::vector<std::size_t>& list : blamed)
     {
       for (std::size_t g : list)

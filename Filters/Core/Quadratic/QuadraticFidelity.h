@@ -25,8 +25,10 @@
 
 #include "Quadratic/InterfaceFaces.h"
 #include "Support/LabelImage.h"
+#include "Support/ProgressObserver.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace labelmesher
@@ -47,9 +49,11 @@ struct QuadraticBounds
 /// changed faces themselves and the voxel faces within reach of them; the
 /// rest passed an earlier call on the same curves. Curves may only have been
 /// pulled back (Scales lowered) since: the voxel faces near any shape a face
-/// has had are those near its full-scale hull.
+/// has had are those near its full-scale hull. `keepGoing`, if given, is asked now and then from
+/// the calling thread; when it says no, AbortRequested is thrown.
 std::vector<std::size_t> FacesBreakingDistances(const QuadraticMesh& mesh, const std::vector<MaterialFace>& faces,
-  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed = nullptr);
+  const LabelImage& image, const QuadraticBounds& bounds, const std::vector<char>* changed = nullptr,
+  const std::function<bool()>& keepGoing = {});
 
 /// The face's six nodes: corners a, b, c, then the mid-nodes of the edges
 /// opposite a, b and c.

@@ -301,6 +301,32 @@ TEST(QuadraticProperties, WithoutTheCornerCertificateSomeCornerFallsBelowTheAngl
   EXPECT_GT(ViolationsWithTheCurver("corner angle", curver), 0);
 }
 
+TEST(QuadraticCurver, StopsWithinARoundWhenAsked)
+{
+  // The certification's reports come at each round and within it (the distance test asks
+  // between chunks): stopped at any of them, the run throws instead of finishing.
+  const LabelImage image = testing::MakeSphere(20, 7.3);
+  MesherParameters mesher;
+  DecimationParameters decimation;
+  const SimplexMesh linear = DecimateMesh(image, MeshLabelImage(image, mesher).Mesh, decimation).Mesh;
+  std::size_t reports = 0;
+  ProgressObserver counting{ [&](const std::string& stage, double) {
+    reports += stage == "quadratic certify" ? 1 : 0;
+    return true;
+  } };
+  const QuadraticResult whole = CurveQuadratic(linear, image, QuadraticParameters{}, counting);
+  ASSERT_GT(reports, whole.Rounds) << "no report within a round";
+  for (std::size_t stopAt = 1; stopAt <= reports; ++stopAt)
+  {
+    std::size_t seen = 0;
+    ProgressObserver stopping{ [&](const std::string& stage, double) {
+      seen += stage == "quadratic certify" ? 1 : 0;
+      return seen < stopAt;
+    } };
+    EXPECT_THROW(CurveQuadratic(linear, image, QuadraticParameters{}, stopping), AbortRequested) << stopAt;
+  }
+}
+
 struct SmoothShape
 {
   const char* Name;

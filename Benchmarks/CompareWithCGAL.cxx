@@ -295,6 +295,7 @@ int main(int argc, char** argv)
     {
       QuadraticParameters quadratic;
       quadratic.ImageToMeshDistance = quadratic.MeshToImageDistance = h;
+      quadratic.MinimumCornerAngle = minimumAngle; // the corners keep the decimator's angle
       const auto curveStart = std::chrono::steady_clock::now();
       const QuadraticResult curved = CurveQuadratic(mesh, image, quadratic);
       quadraticSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - curveStart).count();

@@ -385,7 +385,8 @@ bool MainWindow::saveMesh(const QString& path)
   }
   try
   {
-    // A curved or quadratic mesh is saved without interfaces, as the CLI writes it.
+    // A curved or quadratic mesh is saved without the linear interface surface, as the CLI writes
+    // it (a quadratic one's interfaces come from its cells, ExportMesh.h).
     labelmesher::io::MeshFileWriter writer(out.Curved ? out.Curved : out.Mesh,
       out.Curved ? nullptr : out.Interfaces.GetPointer(), this->Materials, {});
     const std::vector<std::string> written = writer.Write(path.toStdString());

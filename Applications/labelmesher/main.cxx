@@ -149,7 +149,8 @@ int Run(const Arguments& args)
   }
 
   const auto writeStart = std::chrono::steady_clock::now();
-  // The curved and quadratic meshes are written without interfaces (their boundaries are curved).
+  // The curved and quadratic meshes are written without the linear interface surface: a cubic
+  // mesh has no interfaces in the files, a quadratic one has them from its cells (ExportMesh.h).
   if (quadratic && (!meshed.Curved || meshed.Curved->GetNumberOfCells() == 0))
   {
     throw RunError("making quadratic cells produced no cells");

@@ -126,7 +126,9 @@ void QuadraticInterfaceFaces(ExportMesh& out)
       ++next;
     const std::int32_t first = out.CellMaterial[uses[u].Cell];
     const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Cell] : 0;
-    if (next - u < 2 || first != second)
+    // A face of one cell bounds it against the background or the box (0); background cells'
+    // own box faces (0 against 0, with the background written) bound nothing.
+    if (first != second)
       found.emplace_back(uses[u].Cell * 4 + static_cast<std::size_t>(uses[u].Face), static_cast<std::size_t>(second));
     u = next;
   }

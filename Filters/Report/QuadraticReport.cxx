@@ -10,6 +10,8 @@
 #include "vtkFieldData.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
+
 namespace labelmesher
 {
 namespace report
@@ -66,7 +68,10 @@ bool QuadraticHolds(const RunReport& report)
   const bool distances = !q.MeasuredImageToMesh ||
     (*q.MeasuredImageToMesh <= report.ImageToMeshBound + slack && *q.MeasuredMeshToImage <= report.MeshToImageBound + slack);
   // The measured corners come from differences of points: a little round-off more.
-  const bool corners = q.CornerAngleBound <= 0.0 ||
+  // The curver's bound itself must be the decimator's angle (or the linear mesh's smallest, if
+  // smaller): a curver that lowered it would pass its own test.
+  const double asked = std::min(AngleBoundOf(report), report.MinimumAngle.value_or(AngleBoundOf(report)));
+  const bool corners = q.CornerAngleBound >= asked - 1e-9 &&
     (q.MinimumCornerAngle >= q.CornerAngleBound - 1e-9 &&
       (!q.MeasuredMinimumCornerAngle || *q.MeasuredMinimumCornerAngle >= q.CornerAngleBound - 1e-6));
   return certified && sampled && distances && corners;

@@ -8,6 +8,7 @@ an unknown extension. Each case is one ctest test (label "cli").
 
 usage: export_test.py LABELMESHER WORKDIR CASE
 """
+import itertools
 import json
 import os
 import resource
@@ -167,6 +168,48 @@ def case_export_curved_msh():
     print("OK: curved mesh as 10-node triangles, %d cells, nodes within %.1e" % (len(cells), worst))
 
 
+def quadratic_face_key(points, nodes):
+    """A 6-node triangle (corners, then the mid-nodes of edges 0-1, 1-2, 2-0) as a key that is the
+    same in either orientation, and only when each mid-node belongs to its edge."""
+    p = [np.round(points[n], 9).tobytes() for n in nodes]
+    return frozenset((frozenset((p[i], p[(i + 1) % 3])), p[3 + i]) for i in range(3))
+
+
+def assert_quadratic_interfaces(reference, written):
+    """The interfaces `written` (a .msh read by meshio) holds as 6-node triangles are exactly the
+    faces of `reference`'s tetra10 cells between two materials or of one cell alone (against the
+    background, material 0; none between background and background), each in the physical group
+    named for its pair; returns those faces (key -> pair) and a reader of another file's faces."""
+    cells = reference.cells[0].data
+    materials = reference.cell_data["Material"][0].astype(np.int64)
+    # Mid-node slot of each edge in VTK's tetra10 order (corners 0-3, then edges 01, 12, 20, 03,
+    # 13, 23), and a face's corners in any order: the key does not depend on either.
+    slot = {(0, 1): 4, (1, 2): 5, (0, 2): 6, (0, 3): 7, (1, 3): 8, (2, 3): 9}
+    uses, counts = {}, {}
+    for c, cell in enumerate(cells):
+        for face in itertools.combinations(range(4), 3):
+            nodes = list(face) + [slot[(face[0], face[1])], slot[(face[1], face[2])], slot[(face[0], face[2])]]
+            key = quadratic_face_key(reference.points, cell[nodes])
+            uses.setdefault(key, set()).add(int(materials[c]))
+            counts[key] = counts.get(key, 0) + 1
+    expected = {}
+    for key, found in uses.items():
+        pair = tuple(sorted(found | ({0} if counts[key] == 1 else set())))
+        if len(pair) == 2:
+            expected[key] = pair
+
+    def faces_of(mesh, tag_key):
+        return {quadratic_face_key(mesh.points, face): int(tag) for i, c in enumerate(mesh.cells)
+                if c.type == "triangle6" for face, tag in zip(c.data, mesh.cell_data[tag_key][i])}
+    got = faces_of(written, "gmsh:physical")
+    assert len(expected) > 0 and set(got) == set(expected), \
+        "the .msh interfaces are not the cells' faces with their mid-nodes (%d, %d)" % (len(got), len(expected))
+    names = {int(v[0]): k for k, v in written.field_data.items() if v[1] == 2}
+    for key, pair in expected.items():
+        assert names[got[key]] == "%s|%s" % tuple("label_%d" % m for m in pair), (names[got[key]], pair)
+    return expected, faces_of
+
+
 def case_export_quadratic():
     """`mesh --order 2` writes quadratic tetrahedra: .vtu, .msh (Gmsh's 10-node tetrahedra, its own
     node order), .inp (C3D10) read back by meshio as the same cells on the same nodes with every
@@ -230,33 +273,14 @@ def case_export_quadratic():
     # materials or of one cell alone (against the background), each with the three mid-nodes of
     # its edges; the .msh groups them by pair (named "a|b"), the .mesh as TrianglesP2 (read by
     # Gmsh) into the same faces.
-    def face_key(points, nodes):
-        # Corners 0-2, then the mid-nodes of edges 0-1, 1-2, 2-0: the same key in either
-        # orientation, and only when each mid-node belongs to its edge.
-        p = [np.round(points[n], 9).tobytes() for n in nodes]
-        return frozenset((frozenset((p[i], p[(i + 1) % 3])), p[3 + i]) for i in range(3))
-    face_slots = ((1, 2, 3, 5, 9, 8), (0, 3, 2, 7, 9, 6), (0, 1, 3, 4, 8, 7), (0, 2, 1, 6, 5, 4))
-    uses, counts = {}, {}
-    for c, cell in enumerate(ref_cells):
-        for slots in face_slots:
-            key = face_key(reference.points, cell[list(slots)])
-            uses.setdefault(key, set()).add(int(materials[c]))
-            counts[key] = counts.get(key, 0) + 1
-    expected = {}
-    for key, found in uses.items():
-        pair = tuple(sorted(found | ({0} if counts[key] == 1 else set())))
-        if len(pair) == 2:
-            expected[key] = pair
-    def faces_of(mesh, tag_key):
-        return {face_key(mesh.points, face): int(tag) for i, c in enumerate(mesh.cells) if c.type == "triangle6"
-                for face, tag in zip(c.data, mesh.cell_data[tag_key][i])}
-    msh_faces = faces_of(meshes[msh], "gmsh:physical")
-    assert len(expected) > 0 and set(msh_faces) == set(expected), \
-        "the .msh interfaces are not the cells' faces with their mid-nodes (%d, %d)" % (len(msh_faces), len(expected))
-    names = {int(v[0]): k for k, v in meshes[msh].field_data.items() if v[1] == 2}
-    for key, pair in expected.items():
-        assert names[msh_faces[key]] == "%s|%s" % tuple("label_%d" % m for m in pair), (names[msh_faces[key]], pair)
+    expected, faces_of = assert_quadratic_interfaces(reference, meshes[msh])
     assert set(faces_of(from_medit, "gmsh:geometrical")) == set(expected), "the .mesh interfaces differ"
+    # With the background written: its cells' own faces on the box bound nothing.
+    with_background = cli.path("quadratic_background.msh")
+    result = cli.run("mesh", image, "--order", "2", "--include-background", "-o", with_background, "-o",
+                     cli.path("quadratic_background.vtu"), "--no-measure")
+    assert result.returncode == 0, result.stderr
+    assert_quadratic_interfaces(meshio.read(cli.path("quadratic_background.vtu")), meshio.read(with_background))
     # Formats without quadratic tetrahedra, and bad requests, are refused before meshing.
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.stl")), ".inp or .mesh only", 2)
     cli.expect_failure(cli.run("mesh", image, "--order", "2", "-o", cli.path("q.vtp")), ".inp or .mesh only", 2)

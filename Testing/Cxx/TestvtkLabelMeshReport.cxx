@@ -198,7 +198,7 @@ TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
   for (const auto& c : { std::make_pair(arrays::CertifiedMinimumScaledJacobian, 0.05),
          std::make_pair(arrays::SampledMinimumScaledJacobian, 0.05), std::make_pair(arrays::MeasuredImageToMeshDistance, 2.5),
          std::make_pair(arrays::MeasuredMeshToImageDistance, 2.5), std::make_pair(arrays::CertifiedMinimumCornerAngle, 14.9),
-         std::make_pair(arrays::MeasuredMinimumCornerAngle, 14.9) })
+         std::make_pair(arrays::MeasuredMinimumCornerAngle, 14.9), std::make_pair(arrays::CornerAngleBound, 10.0) })
   {
     Spoil(quadratic, c.first, c.second);
     EXPECT_FALSE(report->GetGuaranteesHold()) << c.first;
@@ -208,6 +208,7 @@ TEST(vtkLabelMeshReport, AQuadraticMeshIsPartOfTheMeshReport)
     Spoil(quadratic, arrays::MeasuredMeshToImageDistance, back);
     Spoil(quadratic, arrays::CertifiedMinimumCornerAngle, corner);
     Spoil(quadratic, arrays::MeasuredMinimumCornerAngle, measuredCorner);
+    Spoil(quadratic, arrays::CornerAngleBound, 15.0);
     ASSERT_TRUE(report->GetGuaranteesHold()) << c.first << " restored";
   }
 }

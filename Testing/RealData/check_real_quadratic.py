@@ -73,7 +73,9 @@ for k in range(4):
         a = np.cross(t[i], t[(i + 1) % 3])
         b = np.cross(t[i], t[(i + 2) % 3])
         cos = np.einsum("ij,ij->i", a, b) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1))
-        corner = min(corner, float(np.degrees(np.arccos(np.clip(cos, -1, 1))).min()))
+        # A degenerate trihedron (0/0) counts as a zero angle, never as no value.
+        angles = np.nan_to_num(np.degrees(np.arccos(np.clip(cos, -1, 1))), nan=0.0)
+        corner = min(corner, float(angles.min()))
 assert corner >= 15.0 - 1e-6, "a written cell has a corner angle of %g degrees" % corner
 print("OK: %d quadratic tetrahedra, %d curved interface edges, scaled Jacobian %.3f certified, %.3f sampled "
       "here; smallest corner %.2f deg; h(I,M) %.3f, h(M,I) %.3f; misclassified voxels %d -> %d" % (

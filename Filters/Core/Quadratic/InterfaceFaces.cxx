@@ -5,7 +5,6 @@
 #include "Support/Geometry.h"
 
 #include <algorithm>
-#include <map>
 #include <utility>
 
 namespace labelmesher
@@ -15,28 +14,78 @@ using namespace geometry;
 std::vector<MaterialFace> FindInterfaceFaces(const QuadraticMesh& mesh)
 {
   const SimplexMesh& linear = mesh.Linear;
-  // Face (sorted corners) -> (cell, corner opposite) of its first cell, and whether a second came.
-  struct Seen
+  // Only a face whose corners all touch two materials, or all lie on the mesh's box (a face of
+  // one cell), can bound a material: the others are never listed, which keeps this to the
+  // interfaces' size (every face of every cell in a map took hundreds of MB on digimouse).
+  constexpr std::int64_t kUnseen = -2, kMixed = -1;
+  std::vector<std::int64_t> material(linear.Points.size(), kUnseen);
+  for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
+    for (int k = 0; k < 4; ++k)
+    {
+      std::int64_t& m = material[static_cast<std::size_t>(linear.Cell(c)[k])];
+      m = m == kUnseen ? linear.Materials[c] : (m == linear.Materials[c] ? m : kMixed);
+    }
+  Point3 lo = linear.Points.empty() ? Point3{ 0, 0, 0 } : linear.Points[0], hi = lo;
+  for (const Point3& p : linear.Points)
+    for (int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  std::vector<char> candidate(linear.Points.size(), 0);
+  for (std::size_t v = 0; v < candidate.size(); ++v)
   {
+    bool onBox = false;
+    for (int a = 0; a < 3; ++a)
+      onBox = onBox || linear.Points[v][a] == lo[a] || linear.Points[v][a] == hi[a];
+    candidate[v] = material[v] == kMixed || onBox;
+  }
+  // Each candidate face once per cell using it, sorted by its corners then its cell: a face of
+  // two cells comes twice in a row, the first cell first (a fixed order, as a map's).
+  struct Use
+  {
+    std::array<std::int64_t, 3> Key;
     std::size_t Cell;
     int Opposite;
-    std::int64_t Other = -1;
   };
-  std::map<std::array<std::int64_t, 3>, Seen> faces;
+  std::vector<Use> uses;
   for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
   {
     const std::int64_t* v = linear.Cell(c);
     for (int k = 0; k < 4; ++k)
     {
       std::array<std::int64_t, 3> key{ v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4] };
+      if (!candidate[static_cast<std::size_t>(key[0])] || !candidate[static_cast<std::size_t>(key[1])] ||
+        !candidate[static_cast<std::size_t>(key[2])])
+        continue;
       std::sort(key.begin(), key.end());
-      const auto [it, added] = faces.emplace(key, Seen{ c, k });
-      if (!added)
-        it->second.Other = static_cast<std::int64_t>(c);
+      uses.push_back({ key, c, k });
     }
   }
+  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
+    if (a.Key[0] != b.Key[0])
+      return a.Key[0] < b.Key[0];
+    if (a.Key[1] != b.Key[1])
+      return a.Key[1] < b.Key[1];
+    if (a.Key[2] != b.Key[2])
+      return a.Key[2] < b.Key[2];
+    return a.Cell < b.Cell;
+  });
+  struct Seen
+  {
+    std::size_t Cell;
+    int Opposite;
+    std::int64_t Other = -1;
+  };
+  std::vector<Seen> faces;
+  for (std::size_t u = 0; u < uses.size();)
+  {
+    std::size_t next = u + 1;
+    while (next < uses.size() && uses[next].Key == uses[u].Key)
+      ++next;
+    faces.push_back({ uses[u].Cell, uses[u].Opposite, next - u >= 2 ? static_cast<std::int64_t>(uses[u + 1].Cell) : -1 });
+    u = next;
+  }
+  uses = std::vector<Use>();
   std::vector<MaterialFace> out;
-  for (const auto& [key, seen] : faces)
+  for (const Seen& seen : faces)
   {
     const std::int32_t here = linear.Materials[seen.Cell];
     const bool onBox = seen.Other < 0;

@@ -62,9 +62,9 @@ QuadraticResult FitQuadraticMesh(SimplexMesh linear, const LabelImage& image, co
   QuadraticResult result;
   const auto start = std::chrono::steady_clock::now();
   result.Mesh = MakeQuadraticMesh(std::move(linear));
-  const std::vector<MaterialFace> faces = FindInterfaceFaces(result.Mesh);
-  const std::vector<char> curvable = CurvableEdges(result.Mesh, faces, ImageBox(image));
-  result.FittedEdges = FitInterfaceMidNodes(result.Mesh, faces, curvable, image, parameters.Fit);
+  result.Faces = FindInterfaceFaces(result.Mesh);
+  result.Curvable = CurvableEdges(result.Mesh, result.Faces, ImageBox(image));
+  result.FittedEdges = FitInterfaceMidNodes(result.Mesh, result.Faces, result.Curvable, image, parameters.Fit);
   result.FitSeconds = SecondsSince(start);
   return result;
 }
@@ -88,10 +88,16 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
     throw std::invalid_argument("the minimum corner angle must be in [0, 90) degrees");
   const auto start = std::chrono::steady_clock::now();
   QuadraticMesh& mesh = result.Mesh;
-  const std::vector<MaterialFace> faces = FindInterfaceFaces(mesh);
+  if (result.Curvable.size() != mesh.Edges.size())
+  {
+    result.Faces = FindInterfaceFaces(mesh);
+    result.Curvable = CurvableEdges(mesh, result.Faces, ImageBox(image));
+  }
+  const std::vector<MaterialFace> faces = std::move(result.Faces);
   // Edges on an interface or the box are bounding; the others (interior) are free to untangle.
   // Only interface sheets may bend: the box's faces stay flat (what the homeomorphism needs).
-  const std::vector<char> curvable = CurvableEdges(mesh, faces, ImageBox(image));
+  const std::vector<char> curvable = std::move(result.Curvable);
+  result.Faces.clear(), result.Curvable.clear();
   std::vector<char> free(mesh.Edges.size(), 1);
   for (const MaterialFace& f : faces)
     for (std::int64_t e : f.Edges)
@@ -209,45 +215,50 @@ void CertifyQuadraticMesh(QuadraticResult& result, const LabelImage& image, cons
         {
           if (!(cornersBelow[c] & (1u << k)))
             continue;
-          // The fitted curves through the corner are pulled back first, as little as the corner
-          // needs; interior edges are pinned straight only when none is left (pinning them takes
-          // the untangler's room).
-          std::array<Point3, 10> nodes = mesh.Nodes(c);
-          std::vector<int> pulled;
+          // The fitted curves through the corner are pulled back, as little as the corner needs.
+          // When even straight ones would not do, the untangled interior edges through it bend it:
+          // those are pinned straight instead, and the fitted curves stay.
+          const std::array<Point3, 10> nodes = mesh.Nodes(c);
+          std::vector<int> pulled, interior;
           for (int e : CornerEdges(k))
-            if (!free[static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)])] &&
-              mesh.Curved(static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)])))
-              pulled.push_back(e);
-          double factor = 0.0;
+          {
+            const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)]);
+            if (mesh.Curved(id))
+              (free[id] ? interior : pulled).push_back(e);
+          }
+          double factor = -1.0; // none holds
           for (double f : kCornerFactors)
           {
             std::array<Point3, 10> trial = nodes;
             for (int e : pulled)
             {
               const Point3 middle = geometry::Scale(geometry::Add(nodes[kTetraEdges[e][0]], nodes[kTetraEdges[e][1]]), 0.5);
-              trial[static_cast<std::size_t>(4 + e)] = geometry::Add(middle, geometry::Scale(geometry::Sub(nodes[static_cast<std::size_t>(4 + e)], middle), f));
+              trial[static_cast<std::size_t>(4 + e)] =
+                geometry::Add(middle, geometry::Scale(geometry::Sub(nodes[static_cast<std::size_t>(4 + e)], middle), f));
             }
             const std::array<double, 3> angles = CornerDihedralAngles(trial, k);
-            factor = f;
             if (std::min({ angles[0], angles[1], angles[2] }) >= result.CornerAngleBound - kCornerTolerance)
+            {
+              factor = f;
               break;
+            }
           }
-          for (int e : pulled)
-          {
-            const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)]);
-            const auto [it, added] = cornerFactor.emplace(id, factor);
-            if (!added)
-              it->second = std::min(it->second, factor);
-          }
-          if (pulled.empty())
-            for (int e : CornerEdges(k))
+          if (factor < 0.0 && interior.empty())
+            factor = 0.0; // straight edges only: the linear corner, which holds (round-off aside)
+          if (factor >= 0.0)
+            for (int e : pulled)
             {
               const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)]);
-              if (mesh.Curved(id) && free[id])
-              {
-                free[id] = 0, mesh.Scales[id] = 0.0, ++result.PinnedEdges, pinned = true;
-                untangler.Pin(id);
-              }
+              const auto [it, added] = cornerFactor.emplace(id, factor);
+              if (!added)
+                it->second = std::min(it->second, factor);
+            }
+          else
+            for (int e : interior)
+            {
+              const auto id = static_cast<std::size_t>(mesh.CellEdges[c * 6 + static_cast<std::size_t>(e)]);
+              free[id] = 0, mesh.Scales[id] = 0.0, ++result.PinnedEdges, pinned = true;
+              untangler.Pin(id);
             }
         }
       }

@@ -88,6 +88,10 @@ struct QuadraticResult
   std::size_t FacesFailedDistance = 0; ///< faces that failed a distance bound in some round
   std::size_t CellsFailedCornerAngle = 0; ///< cells with a corner below the bound in some round
   double FitSeconds = 0.0, CertifySeconds = 0.0;
+  /// Between the two stages: the linear mesh's interface faces and curvable edges, which the fit
+  /// finds and the certification takes over (and releases); found again when absent.
+  std::vector<MaterialFace> Faces;
+  std::vector<char> Curvable;
 };
 
 /// `linear`: the whole decimated mesh (every cell of the box, background

@@ -25,6 +25,7 @@
 #include "RandomLabelImages.h"
 #include "SyntheticShapes.h"
 #include "Support/Geometry.h"
+#include "Support/ParallelChunks.h"
 
 #include <gtest/gtest.h>
 
@@ -304,7 +305,13 @@ TEST(QuadraticProperties, WithoutTheCornerCertificateSomeCornerFallsBelowTheAngl
 TEST(QuadraticCurver, StopsWithinARoundWhenAsked)
 {
   // The certification's reports come at each round and within it (the distance test asks
-  // between chunks): stopped at any of them, the run throws instead of finishing.
+  // between chunks): stopped at any of them, the run throws instead of finishing. One thread, so
+  // that the calling thread takes every chunk and the reports are the same in every run.
+  struct OneThread
+  {
+    OneThread() { SetThreadLimit(1); }
+    ~OneThread() { SetThreadLimit(0); }
+  } oneThread;
   const LabelImage image = testing::MakeSphere(20, 7.3);
   MesherParameters mesher;
   DecimationParameters decimation;

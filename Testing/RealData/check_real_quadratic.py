@@ -14,7 +14,7 @@ from its JSON report and from the written mesh:
   computed here;
 - quadratic tetrahedra only, the linear mesh's cells and materials, some interfaces curved;
 - fewer misclassified voxels than the linear mesh (the corner bound costs some of the gain:
-  1,962 -> 1,366 on the rat head, 12,062 -> 8,345 on totalseg, where it was 1,154 and 6,698
+  1,962 -> 1,355 on the rat head, 12,062 -> 8,186 on totalseg, where it was 1,154 and 6,698
   without it, 2026-12-05).
 
 usage: check_real_quadratic.py LABELMESHER INPUT WORKDIR

@@ -34,7 +34,7 @@ constexpr double kCornerTolerance = 1e-9;
 /// Factors a corner may apply to the curves through it, largest first: it takes the largest
 /// under which it holds (with the other curves as they are), at most 0.9 so that every round
 /// makes progress. Halving instead took half the curves' gain on smooth shapes (sphere: 596
-/// misclassified voxels linear, 387 curved with halving, 339 so) and twice the rounds of a
+/// misclassified voxels linear, 387 curved with halving, 330 so) and twice the rounds of a
 /// factor 3/4 (totalseg: 21 of those, 11 so).
 constexpr double kCornerFactors[] = { 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.0 };
 

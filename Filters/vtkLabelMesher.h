@@ -36,13 +36,16 @@
  * tetrahedra (Quadratic/QuadraticCurver.h), output port 2: the mid-nodes of
  * interface edges fitted to the image, every cell's min det J / max det J
  * certified at least MinimumScaledJacobian by the Bernstein coefficients of
- * det J, both distance bounds certified on the curved interfaces, curves that
- * fail pulled back towards straight; interior edges, box faces and junction
- * curves stay straight. Cell data Material and ScaledJacobian (the certified
- * lower bound); field data Order, MinimumScaledJacobianBound,
- * CertifiedMinimumScaledJacobian, FittedEdges, CurvedEdges, PulledBackEdges,
- * CellsFailedScaledJacobian, FacesFailedDistance and, with MeasureOutput,
- * the independent measurements (QuadraticOutput.h).
+ * det J, every corner's dihedral angles between its edges' tangents at least
+ * MinimumAngle (Quadratic/QuadraticCorners.h), both distance bounds certified
+ * on the curved interfaces, curves that fail pulled back towards straight;
+ * box faces and junction curves stay straight. Cell data Material,
+ * ScaledJacobian (the certified lower bound) and CornerAngle (degrees); field
+ * data Order, MinimumScaledJacobianBound, CertifiedMinimumScaledJacobian,
+ * CornerAngleBound, CertifiedMinimumCornerAngle, FittedEdges, CurvedEdges,
+ * PulledBackEdges, CellsFailedScaledJacobian, CellsFailedCornerAngle,
+ * FacesFailedDistance and, with MeasureOutput, the independent measurements
+ * (QuadraticOutput.h).
  *
  * Input port 0: the label image, as vtkLabelOctreeMesher's (integer point
  * scalars or the array selected with SetInputArrayToProcess(0, 0, 0, POINTS,
@@ -160,7 +163,8 @@ public:
   ///@{
   /**
    * Smallest dihedral (3D) or planar (2D) angle the decimation keeps, in
-   * degrees: (0, GetProvenAngleBound(dimension)]; default 15. Values are
+   * degrees: (0, GetProvenAngleBound(dimension)]; default 15. Also the corner
+   * angle the curved cells keep (Curve, Order 2). Values are
    * clamped to [0, the larger of the two bounds]; the image's own bound is
    * checked when the filter runs.
    */

@@ -2,6 +2,7 @@
 // det J of a quadratic tetrahedron in the cubic Bernstein basis.
 #include "Quadratic/TetraJacobian.h"
 
+#include "Quadratic/BernsteinCertificate.h"
 #include "Quadratic/QuadraticMesh.h"
 #include "Support/Geometry.h"
 
@@ -86,29 +87,10 @@ std::array<double, 20> JacobianCoefficients(const std::array<Point3, 10>& nodes)
 namespace
 {
 
-/// A piece of the cell: the quadratic map restricted to a sub-tetrahedron of the reference one, as
-/// its ten nodes, and the sub-tetrahedron's share of the reference volume (det J of the piece is
-/// det J of the cell times that share).
-struct Piece
-{
-  std::array<Point3, 10> Nodes;
-  double Share = 1.0;
-  double Low = 0.0, High = 0.0; ///< its coefficients' extremes, divided by Share
-};
-
-Piece MakePiece(const std::array<Point3, 10>& nodes, double share)
-{
-  Piece p{ nodes, share };
-  const std::array<double, 20> c = JacobianCoefficients(nodes);
-  const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
-  p.Low = *lo / share;
-  p.High = *hi / share;
-  return p;
-}
-
-/// The eight pieces of the red refinement of `parent` (in its reference coordinates: corners,
-/// then the midpoints of its edges in kTetraEdges' order), each positively oriented.
-void Refine(const Piece& parent, std::vector<Piece>& out)
+/// The nodes of the eight pieces of the red refinement of the cell with `parent` nodes (in its
+/// reference coordinates: corners, then the midpoints of its edges in kTetraEdges' order), each
+/// positively oriented.
+void Refine(const std::array<Point3, 10>& parent, std::vector<std::array<Point3, 10>>& out)
 {
   static const int kChildren[8][4] = { { 0, 4, 6, 7 }, { 4, 1, 5, 8 }, { 6, 5, 2, 9 }, { 7, 8, 9, 3 },
     { 6, 8, 4, 5 }, { 6, 8, 5, 9 }, { 6, 8, 9, 7 }, { 6, 8, 7, 4 } };
@@ -127,55 +109,29 @@ void Refine(const Piece& parent, std::vector<Piece>& out)
       std::swap(corner[1], corner[2]);
     std::array<Point3, 10> nodes;
     for (int k = 0; k < 4; ++k)
-      nodes[k] = EvaluateQuadraticTetra(parent.Nodes, at[corner[k]]);
+      nodes[k] = EvaluateQuadraticTetra(parent, at[corner[k]]);
     for (int e = 0; e < 6; ++e)
     {
       std::array<double, 4> mid{};
       for (int q = 0; q < 4; ++q)
         mid[q] = 0.5 * (at[corner[kTetraEdges[e][0]]][q] + at[corner[kTetraEdges[e][1]]][q]);
-      nodes[4 + e] = EvaluateQuadraticTetra(parent.Nodes, mid);
+      nodes[4 + e] = EvaluateQuadraticTetra(parent, mid);
     }
-    out.push_back(MakePiece(nodes, parent.Share / 8.0));
+    out.push_back(nodes);
   }
-}
-
-double Ratio(double lo, double hi)
-{
-  // A positive smallest coefficient proves validity only beyond the coefficients' round-off
-  // (relative to the largest: they are sums of products of the nodes).
-  constexpr double kRoundOff = 1e-12;
-  if (lo > kRoundOff * hi)
-    return lo / hi;
-  if (lo > 0.0)
-    return 0.0; // positive, but not beyond round-off: not proved
-  const double largest = std::max(std::fabs(lo), std::fabs(hi));
-  return largest > 0.0 ? lo / largest : -1.0;
 }
 
 } // namespace
 
 double CertifiedScaledJacobian(const std::array<Point3, 10>& nodes, double target, int depth)
 {
-  std::vector<Piece> pieces{ MakePiece(nodes, 1.0) };
-  for (int level = 0;; ++level)
-  {
-    double lo = pieces[0].Low, hi = pieces[0].High;
-    for (const Piece& p : pieces)
-      lo = std::min(lo, p.Low), hi = std::max(hi, p.High);
-    const double ratio = Ratio(lo, hi);
-    if (ratio >= target || level == depth)
-      return ratio;
-    // Refine the pieces that hold the bound down; the others keep their coefficients.
-    std::vector<Piece> next;
-    for (const Piece& p : pieces)
-    {
-      if (p.Low < target * hi)
-        Refine(p, next);
-      else
-        next.push_back(p);
-    }
-    pieces.swap(next);
-  }
+  return CertifiedBernsteinRatio(nodes, target, depth, 1.0 / 8.0,
+    [](const std::array<Point3, 10>& n) {
+      const std::array<double, 20> c = JacobianCoefficients(n);
+      const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
+      return std::make_pair(*lo, *hi);
+    },
+    Refine);
 }
 
 } // namespace labelmesher

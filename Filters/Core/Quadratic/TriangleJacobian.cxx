@@ -2,6 +2,7 @@
 // det J of a quadratic triangle in the quadratic Bernstein basis.
 #include "Quadratic/TriangleJacobian.h"
 
+#include "Quadratic/BernsteinCertificate.h"
 #include "Support/Geometry.h"
 
 #include <algorithm>
@@ -19,28 +20,9 @@ double Cross2(const Point3& a, const Point3& b)
   return a[0] * b[1] - a[1] * b[0];
 }
 
-/// A piece of the cell: the map restricted to a sub-triangle of the reference one, as its six
-/// nodes, and its share of the reference area (its det J is the cell's times that share).
-struct Piece
-{
-  std::array<Point3, 6> Nodes;
-  double Share = 1.0;
-  double Low = 0.0, High = 0.0; ///< its coefficients' extremes, divided by Share
-};
-
-Piece MakePiece(const std::array<Point3, 6>& nodes, double share)
-{
-  Piece p{ nodes, share };
-  const std::array<double, 6> c = TriangleJacobianCoefficients(nodes);
-  const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
-  p.Low = *lo / share;
-  p.High = *hi / share;
-  return p;
-}
-
-/// The four pieces of `parent` (corners, then its edges' midpoints: reference points 0-5), each
-/// counter-clockwise like the parent.
-void Refine(const Piece& parent, std::vector<Piece>& out)
+/// The nodes of the four pieces of the cell with `parent` nodes (corners, then its edges'
+/// midpoints: reference points 0-5), each counter-clockwise like the parent.
+void Refine(const std::array<Point3, 6>& parent, std::vector<std::array<Point3, 6>>& out)
 {
   static const int kChildren[4][3] = { { 0, 3, 5 }, { 3, 1, 4 }, { 5, 4, 2 }, { 4, 5, 3 } };
   std::array<std::array<double, 3>, 6> at{};
@@ -52,7 +34,7 @@ void Refine(const Piece& parent, std::vector<Piece>& out)
   {
     std::array<Point3, 6> nodes;
     for (int k = 0; k < 3; ++k)
-      nodes[static_cast<std::size_t>(k)] = EvaluateQuadraticTriangle(parent.Nodes, at[static_cast<std::size_t>(child[k])]);
+      nodes[static_cast<std::size_t>(k)] = EvaluateQuadraticTriangle(parent, at[static_cast<std::size_t>(child[k])]);
     for (int e = 0; e < 3; ++e)
     {
       std::array<double, 3> mid{};
@@ -60,22 +42,10 @@ void Refine(const Piece& parent, std::vector<Piece>& out)
         mid[static_cast<std::size_t>(q)] = 0.5 *
           (at[static_cast<std::size_t>(child[kTriangleEdges[e][0]])][static_cast<std::size_t>(q)] +
             at[static_cast<std::size_t>(child[kTriangleEdges[e][1]])][static_cast<std::size_t>(q)]);
-      nodes[static_cast<std::size_t>(3 + e)] = EvaluateQuadraticTriangle(parent.Nodes, mid);
+      nodes[static_cast<std::size_t>(3 + e)] = EvaluateQuadraticTriangle(parent, mid);
     }
-    out.push_back(MakePiece(nodes, parent.Share / 4.0));
+    out.push_back(nodes);
   }
-}
-
-double Ratio(double lo, double hi)
-{
-  // A positive smallest coefficient proves validity only beyond the coefficients' round-off.
-  constexpr double kRoundOff = 1e-12;
-  if (lo > kRoundOff * hi)
-    return lo / hi;
-  if (lo > 0.0)
-    return 0.0;
-  const double largest = std::max(std::fabs(lo), std::fabs(hi));
-  return largest > 0.0 ? lo / largest : -1.0;
 }
 
 } // namespace
@@ -121,25 +91,13 @@ std::array<double, 6> TriangleJacobianCoefficients(const std::array<Point3, 6>& 
 
 double CertifiedTriangleScaledJacobian(const std::array<Point3, 6>& nodes, double target, int depth)
 {
-  std::vector<Piece> pieces{ MakePiece(nodes, 1.0) };
-  for (int level = 0;; ++level)
-  {
-    double lo = pieces[0].Low, hi = pieces[0].High;
-    for (const Piece& p : pieces)
-      lo = std::min(lo, p.Low), hi = std::max(hi, p.High);
-    const double ratio = Ratio(lo, hi);
-    if (ratio >= target || level == depth)
-      return ratio;
-    std::vector<Piece> next;
-    for (const Piece& p : pieces)
-    {
-      if (p.Low < target * hi)
-        Refine(p, next);
-      else
-        next.push_back(p);
-    }
-    pieces.swap(next);
-  }
+  return CertifiedBernsteinRatio(nodes, target, depth, 1.0 / 4.0,
+    [](const std::array<Point3, 6>& n) {
+      const std::array<double, 6> c = TriangleJacobianCoefficients(n);
+      const auto [lo, hi] = std::minmax_element(c.begin(), c.end());
+      return std::make_pair(*lo, *hi);
+    },
+    Refine);
 }
 
 } // namespace labelmesher

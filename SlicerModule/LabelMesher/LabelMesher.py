@@ -350,4 +350,5 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
         self.assertEqual(model.GetMesh().GetCellType(0), vtk.VTK_QUADRATIC_TETRA)
         self.assertTrue(quadratic["guarantees_hold"])
         self.assertGreaterEqual(quadratic["certified_minimum_scaled_jacobian"], quadratic["scaled_jacobian_bound"])
+        self.assertGreaterEqual(quadratic["minimum_corner_angle_degrees"], quadratic["corner_angle_bound_degrees"] - 1e-9)
         self.delayDisplay("LabelMesher quadratic volume test passed")

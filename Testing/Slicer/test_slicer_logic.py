@@ -322,6 +322,10 @@ class QuadraticVolumeTest(unittest.TestCase):
                 self.assertGreaterEqual(q["certified_minimum_scaled_jacobian"], q["scaled_jacobian_bound"])
                 self.assertGreaterEqual(q["sampled_minimum_scaled_jacobian"], q["certified_minimum_scaled_jacobian"] - 1e-12)
                 self.assertGreater(q["curved_edges"], 0)
+                # The corners keep the decimator's angle (15 degrees), exactly and as measured.
+                self.assertEqual(q["corner_angle_bound_degrees"], 15.0)
+                self.assertGreaterEqual(q["minimum_corner_angle_degrees"], 15.0 - 1e-9)
+                self.assertGreaterEqual(q["measured_minimum_corner_angle_degrees"], 15.0 - 1e-6)
                 for side in ("image_to_mesh", "mesh_to_image"):
                     self.assertLessEqual(q[f"measured_{side}"], report["parameters"][side] + q["measure_resolution"] + 1e-9)
                 self.assertIsNotNone(q["misclassified_quadratic"])

@@ -202,15 +202,16 @@ SimplexMesh RefineQuadraticMesh(const QuadraticMesh& mesh, int n)
 
 std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n)
 {
-  // Faces by sorted corners: the first cell and corner opposite, and the second cell's material.
-  struct Side
+  // Every face once per cell, sorted by its corners: a face of two cells comes twice in a row
+  // (a sorted list, not a map: a map of every face took GBs on the large volumes).
+  struct Use
   {
+    std::array<std::int64_t, 3> Key;
     std::size_t Cell;
     int Opposite;
-    std::int32_t Other;
-    int Cells;
   };
-  std::map<std::array<std::int64_t, 3>, Side> faces;
+  std::vector<Use> uses;
+  uses.reserve(mesh.NumberOfCells() * 4);
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
     const std::int64_t* v = mesh.Linear.Cell(c);
@@ -218,24 +219,41 @@ std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n
     {
       std::array<std::int64_t, 3> key{ v[(k + 1) % 4], v[(k + 2) % 4], v[(k + 3) % 4] };
       std::sort(key.begin(), key.end());
-      const auto [it, added] = faces.emplace(key, Side{ c, k, 0, 1 });
-      if (!added)
-        it->second.Other = mesh.Linear.Materials[c], ++it->second.Cells;
+      uses.push_back({ key, c, k });
     }
   }
+  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
+    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+  });
+  // Each curved face at the coarsest step within the tolerance stated for step 1/n, which the
+  // most bent edge sets: (2/3) bend / m² for a face of its own largest bend, at step 1/m.
+  double largestBend = 0.0;
+  auto bendOf = [&](std::size_t e) {
+    const Point3& a = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[e][0])];
+    const Point3& b = mesh.Linear.Points[static_cast<std::size_t>(mesh.Edges[e][1])];
+    return Norm(Sub(Add(a, b), Scale(mesh.MidNode(e), 2.0)));
+  };
+  for (std::size_t e = 0; e < mesh.Edges.size(); ++e)
+    largestBend = std::max(largestBend, bendOf(e));
   std::vector<BoundaryFacet> facets;
-  for (const auto& [key, side] : faces)
+  for (std::size_t u = 0; u < uses.size();)
   {
+    std::size_t next = u + 1;
+    while (next < uses.size() && uses[next].Key == uses[u].Key)
+      ++next;
+    const Use& side = uses[u];
     const std::int32_t here = mesh.Linear.Materials[side.Cell];
-    const std::int32_t there = side.Cells == 1 ? 0 : side.Other;
+    const std::int32_t there = next - u >= 2 ? mesh.Linear.Materials[uses[u + 1].Cell] : 0;
+    u = next;
     if (here == there)
       continue;
     const std::array<Point3, 10> nodes = mesh.Nodes(side.Cell);
-    // A face whose three edges are straight is its flat triangle: one facet, the same points.
-    bool straight = true;
+    // The face's own bend; a face whose three edges are straight is its flat triangle: one facet.
+    double bend = 0.0;
     for (int e = 0; e < 6; ++e)
       if (kTetraEdges[e][0] != side.Opposite && kTetraEdges[e][1] != side.Opposite)
-        straight = straight && !mesh.Curved(static_cast<std::size_t>(mesh.CellEdges[side.Cell * 6 + static_cast<std::size_t>(e)]));
+        bend = std::max(bend, bendOf(static_cast<std::size_t>(mesh.CellEdges[side.Cell * 6 + static_cast<std::size_t>(e)])));
+    const int m = bend > 0.0 ? std::clamp(static_cast<int>(std::ceil(n * std::sqrt(bend / largestBend) - 1e-9)), 1, n) : 1;
     // The face's lattice: weights on its three corners (the cell's others), 0 on the opposite one.
     int corner[3], used = 0;
     for (int k = 0; k < 4; ++k)
@@ -243,19 +261,14 @@ std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n
         corner[used++] = k;
     auto at = [&](int i, int j) {
       double l[4] = { 0, 0, 0, 0 };
-      l[corner[0]] = double(n - i - j) / n, l[corner[1]] = double(i) / n, l[corner[2]] = double(j) / n;
+      l[corner[0]] = double(m - i - j) / m, l[corner[1]] = double(i) / m, l[corner[2]] = double(j) / m;
       return Map(nodes, l);
     };
-    if (straight)
-    {
-      facets.push_back({ { at(0, 0), at(n, 0), at(0, n) }, here, there });
-      continue;
-    }
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i + j < n; ++i)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i + j < m; ++i)
       {
         facets.push_back({ { at(i, j), at(i + 1, j), at(i, j + 1) }, here, there });
-        if (i + j + 1 < n)
+        if (i + j + 1 < m)
           facets.push_back({ { at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) }, here, there });
       }
   }

@@ -31,10 +31,12 @@ namespace labelmesher
 SimplexMesh RefineQuadraticMesh(const QuadraticMesh& mesh, int n);
 
 /// The faces bounding a material (between cells of two materials, or of one
-/// cell: the box), each curved one flattened into the n² triangles through its
-/// points at step 1/n, each straight one as it is: the curved boundary to
-/// within RefinementTolerance(mesh, n), for MeasureHausdorff at a fine step
-/// without refining the volume.
+/// cell: the box), each curved one flattened into the m² triangles through its
+/// points at step 1/m, m ≤ n the smallest that keeps it within
+/// RefinementTolerance(mesh, n) (a face bent less than the most bent edge
+/// needs fewer), each straight one as it is: the curved boundary to within
+/// that tolerance, for MeasureHausdorff at a fine step without refining the
+/// volume.
 std::vector<BoundaryFacet> CurvedBoundaryFacets(const QuadraticMesh& mesh, int n);
 
 /// How far RefineQuadraticMesh(mesh, n)'s boundaries may be from the curved ones, voxels.

@@ -39,11 +39,11 @@ constexpr double kStreamedBytesPerFace = 48.0;
 
 /// The quadratic stage (Order 2), per voxel face between labels, beside the output it starts
 /// from: its own structures (totalseg 510, digimouse 665 bytes a face measured), and its
-/// measurements (the curved faces flattened for the distances, the measures' own structures:
-/// totalseg 3,900, the rat head 1,900). Benchmarks/README.md, "Quadratic tetrahedra: time and
-/// memory".
+/// measurements (the curved faces flattened for the distances each at its own step, the
+/// measures' own structures: totalseg about 130, digimouse about 100 bytes a face since ae73cba;
+/// 3,900 before). Benchmarks/README.md, "Quadratic tetrahedra: time and memory".
 constexpr double kQuadraticBytesPerFace = 650.0;
-constexpr double kQuadraticMeasureBytesPerFace = 4000.0;
+constexpr double kQuadraticMeasureBytesPerFace = 250.0;
 
 double ImageBytes(const LabelImage& image)
 {

@@ -5,6 +5,9 @@
 #include "Support/Geometry.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace labelmesher
@@ -84,6 +87,25 @@ std::vector<MaterialFace> FindInterfaceFaces(const QuadraticMesh& mesh)
     u = next;
   }
   uses = std::vector<Use>();
+  // The candidates hold every face of one cell only if the mesh fills its box (then such faces
+  // lie on it): their area must be the box's, or faces were missed (and their edges could curve).
+  double boundary = 0.0;
+  for (const Seen& seen : faces)
+    if (seen.Other < 0)
+    {
+      const std::int64_t* v = linear.Cell(seen.Cell);
+      const int k = seen.Opposite;
+      const Point3& a = linear.Points[static_cast<std::size_t>(v[(k + 1) % 4])];
+      boundary += 0.5 *
+        Norm(Cross(Sub(linear.Points[static_cast<std::size_t>(v[(k + 2) % 4])], a),
+          Sub(linear.Points[static_cast<std::size_t>(v[(k + 3) % 4])], a)));
+    }
+  const Point3 size = Sub(hi, lo);
+  const double box = 2.0 * (size[0] * size[1] + size[1] * size[2] + size[0] * size[2]);
+  if (!(std::fabs(boundary - box) <= 1e-9 * box))
+    throw std::invalid_argument("quadratic curving needs a mesh that fills its box, background cells included "
+                                "(its boundary has area " + std::to_string(boundary) + ", its box " +
+      std::to_string(box) + ")");
   std::vector<MaterialFace> out;
   for (const Seen& seen : faces)
   {

@@ -27,6 +27,8 @@ struct MaterialFace
 };
 
 /// Every face bounding a material, in a fixed order (by their sorted corner ids).
+/// The mesh must fill its bounding box (background cells included): throws
+/// std::invalid_argument when its faces of one cell do not cover the box.
 std::vector<MaterialFace> FindInterfaceFaces(const QuadraticMesh& mesh);
 
 /// Per edge: true when the edge may be curved: it lies on exactly two

@@ -89,7 +89,8 @@ struct QuadraticResult
   std::size_t CellsFailedCornerAngle = 0; ///< cells with a corner below the bound in some round
   double FitSeconds = 0.0, CertifySeconds = 0.0;
   /// Between the two stages: the linear mesh's interface faces and curvable edges, which the fit
-  /// finds and the certification takes over (and releases); found again when absent.
+  /// finds and the certification takes over (and releases); found again when absent. A caller
+  /// that changes Mesh.Linear or the image between the stages must clear them.
   std::vector<MaterialFace> Faces;
   std::vector<char> Curvable;
 };

@@ -40,8 +40,10 @@ constexpr double kStreamedBytesPerFace = 48.0;
 /// The quadratic stage (Order 2), per voxel face between labels, beside the output it starts
 /// from: its own structures (totalseg 510, digimouse 665 bytes a face measured), and its
 /// measurements (the curved faces flattened for the distances each at its own step, the
-/// measures' own structures: totalseg about 130, digimouse about 100 bytes a face since ae73cba;
-/// 3,900 before). Benchmarks/README.md, "Quadratic tetrahedra: time and memory".
+/// measures' own structures: about 100-300 bytes a face on totalseg and digimouse since ae73cba,
+/// 3,900 before). A mesh whose faces were all as bent as its most bent edge would flatten every
+/// face at the finest step again and need up to that former figure: priced on real data, which
+/// is far from it. Benchmarks/README.md, "Quadratic tetrahedra: time and memory".
 constexpr double kQuadraticBytesPerFace = 650.0;
 constexpr double kQuadraticMeasureBytesPerFace = 250.0;
 

@@ -45,8 +45,9 @@ MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blo
 /// `estimate` (EstimateStreamedMemory's) with the quadratic stage after the
 /// decimation (vtkLabelMesher's Order 2, Quadratic/QuadraticCurver.h): its
 /// mid-nodes, elastic system and distance certificates, and when `measured`
-/// the refined cells its measurements take, beside the output held, priced
-/// per voxel face between labels (the curved interfaces follow them).
+/// what its measurements hold (the flattened boundary faces; the voxel count
+/// refines one cell at a time), beside the output held, priced per voxel face
+/// between labels (the curved interfaces follow them).
 MemoryEstimate WithQuadraticStage(MemoryEstimate estimate, bool measured);
 /// The memory of decimating a mesh of `cells` cells (the decimator alone, its
 /// input already held).

@@ -302,6 +302,34 @@ TEST(QuadraticProperties, WithoutTheCornerCertificateSomeCornerFallsBelowTheAngl
   EXPECT_GT(ViolationsWithTheCurver("corner angle", curver), 0);
 }
 
+TEST(QuadraticCurver, RefusesAMeshThatDoesNotFillItsBox)
+{
+  // Without the background cells the faces of one cell are not all on the box: the interface
+  // lookup, which takes those on the box, would miss some. One plain error instead.
+  const LabelImage image = testing::MakeSphere(16, 5.3);
+  const SimplexMesh whole = DecimateMesh(image, MeshLabelImage(image, MesherParameters{}).Mesh, DecimationParameters{}).Mesh;
+  EXPECT_NO_THROW(CurveQuadratic(whole, image, QuadraticParameters{}));
+  SimplexMesh foreground;
+  foreground.Dimension = 3;
+  foreground.Points = whole.Points;
+  for (std::size_t c = 0; c < whole.NumberOfCells(); ++c)
+    if (whole.Materials[c] != 0)
+    {
+      foreground.Connectivity.insert(foreground.Connectivity.end(), whole.Cell(c), whole.Cell(c) + 4);
+      foreground.Materials.push_back(whole.Materials[c]);
+    }
+  ASSERT_GT(foreground.NumberOfCells(), 0u);
+  try
+  {
+    CurveQuadratic(foreground, image, QuadraticParameters{});
+    ADD_FAILURE() << "a mesh without its background was curved";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("fills its box"), std::string::npos) << e.what();
+  }
+}
+
 TEST(QuadraticCurver, StopsWithinARoundWhenAsked)
 {
   // The certification's reports come at each round and within it (the distance test asks

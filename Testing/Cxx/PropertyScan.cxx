@@ -21,8 +21,10 @@
 // --curve (2D only): mesher, decimator and curver, C1 or C2 drawn per seed
 // (DrawSmoothness); the curved mesh must keep every guarantee of
 // TestCurverProperties.
-// --order2 (3D only): mesher, decimator and the quadratic curver; the quadratic
+// --order2: in 3D, mesher, decimator and the quadratic curver; the quadratic
 // mesh must keep every guarantee of TestQuadraticCurver (QuadraticGuarantees.h).
+// In 2D, the curver making quadratic triangles (CurvingParameters::Order 2), with
+// every guarantee of --curve and each cell exactly quadratic.
 // With LABELMESHER_SCAN_UNCERTIFIED=distances (or =jacobians, =corners) in the
 // environment the curver skips that certificate (to find images that show it
 // is needed).
@@ -100,11 +102,9 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "bad arguments: --curve needs dimension 2\n");
     return 2;
   }
-  if (quadratic && dimension != 3)
-  {
-    std::fprintf(stderr, "bad arguments: --order2 needs dimension 3\n");
-    return 2;
-  }
+  // In 2D, --order2 is the curver's (quadratic triangles).
+  const bool curveOrder2 = quadratic && dimension == 2;
+  const bool quadratic3D = quadratic && dimension == 3;
   std::uint64_t misclassifiedLinear = 0, misclassifiedCurved = 0;
   std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed)
@@ -119,9 +119,10 @@ int main(int argc, char** argv)
     testing::CurverRun run;
     testing::QuadraticRun quadraticRun;
     const Smoothness smoothness = testing::DrawSmoothness(seed);
-    const auto problems = curve
-      ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run)
-      : quadratic ? testing::ViolatedQuadraticGuarantees(random.Image, parameters, decimation, &quadraticRun, &quadraticCurver)
+    const auto problems = curve || curveOrder2
+      ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run,
+          testing::kCurvedScaledJacobian, -1.0, curveOrder2 ? 2 : 3)
+      : quadratic3D ? testing::ViolatedQuadraticGuarantees(random.Image, parameters, decimation, &quadraticRun, &quadraticCurver)
       : streamed ? testing::ViolatedStreamedGuarantees(random.Image, parameters, decimation, streaming, &counts)
       : decimate ? testing::ViolatedDecimatorGuarantees(random.Image, parameters, decimation, &counts)
                  : testing::ViolatedMesherGuarantees(random.Image, parameters);
@@ -136,7 +137,7 @@ int main(int argc, char** argv)
       parameters.ImageToMeshDistance, parameters.MeshToImageDistance);
     if (decimate)
       std::printf(", decimated at %g degrees", decimation.MinimumAngle);
-    if (curve)
+    if (curve || curveOrder2)
       std::printf(", curved C%d", static_cast<int>(smoothness));
     if (quadratic)
       std::printf(", quadratic");
@@ -150,7 +151,7 @@ int main(int argc, char** argv)
     curve ? "curved " : quadratic ? "quadratic " : streamed ? "streamed " : decimate ? "decimated " : "",
     family.c_str(), dimension, static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
     static_cast<unsigned long long>(failures), static_cast<unsigned long long>(count));
-  if (curve)
+  if (curve || curveOrder2)
     std::printf("misclassified pixels: %llu linear, %llu curved\n", static_cast<unsigned long long>(misclassifiedLinear),
       static_cast<unsigned long long>(misclassifiedCurved));
   else if (quadratic)

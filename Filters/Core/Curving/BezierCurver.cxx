@@ -79,9 +79,10 @@ std::vector<CurvePiece> SmoothInterfaces(const SimplexMesh& linear, const Curved
     {
       vertices.push_back({ linear.Points[v][0], linear.Points[v][1] });
     }
-    const auto segments = fit
-      ? FitChain(vertices, chain.Closed, samples[c], { options.Tension, parameters.FitRegularisation, 3 })
-      : SmoothChain(vertices, chain.Closed, options);
+    const FitOptions fitting{ options.Tension, parameters.FitRegularisation, 3 };
+    auto segments = fit ? FitChain(vertices, chain.Closed, samples[c], fitting) : SmoothChain(vertices, chain.Closed, options);
+    if (fit && parameters.Order == 2)
+      segments = FitQuadraticSegments(vertices, chain.Closed, samples[c], segments, fitting);
     for (std::size_t s = 0; s < segments.size(); ++s)
     {
       CurvePiece piece;
@@ -89,6 +90,15 @@ std::vector<CurvePiece> SmoothInterfaces(const SimplexMesh& linear, const Curved
       piece.To = chain.Vertices[(s + 1) % chain.Vertices.size()];
       piece.ControlIds = curved.EdgePoints(piece.From, piece.To);
       piece.Fitted = segments[s];
+      if (parameters.Order == 2)
+      {
+        // Fitted as a quadratic (above), or the quadratic nearest to the smoothed cubic: the joints
+        // are then G1 only where both happen to be, the price of one control point per edge.
+        const Point2& a = vertices[s];
+        const Point2& b = vertices[(s + 1) % vertices.size()];
+        piece.Fitted = ElevateQuadratic(a, NearestQuadraticControl(a, segments[s][0], segments[s][1], b), b);
+        piece.Quadratic = true;
+      }
       piece.Left = chain.FirstMaterial;
       piece.Right = chain.SecondMaterial;
       pieces.push_back(piece);
@@ -118,9 +128,9 @@ struct FailingCell
 {
   std::size_t Cell = 0;
   std::uint8_t Corners = 7;
-  /// A corner angle alone: a curve leaves its vertex along its handle whatever
-  /// its scale, so halving would not turn it; the curves at the corner are made
-  /// straight at once.
+  /// A corner angle alone: a cubic curve leaves its vertex along its handle
+  /// whatever its scale, so halving would not turn it; the cubic curves at the
+  /// corner are made straight at once.
   bool AngleOnly = false;
 };
 
@@ -182,7 +192,10 @@ bool ShortenPiecesOfCells(const SimplexMesh& linear, const std::vector<FailingCe
       ring = std::move(wider);
     }
     chosen.insert(own.begin(), own.end());
-    if (persistent || (failing.AngleOnly && atCorner))
+    // A quadratic piece's tangent does turn towards its chord as it is halved (its one control
+    // point moves towards the chord's midpoint): only a cubic one is straightened at once.
+    const bool quadratic = !own.empty() && pieces[*own.begin()].Quadratic;
+    if (persistent || (failing.AngleOnly && atCorner && !quadratic))
       straighten.insert(own.begin(), own.end());
   }
   for (std::size_t p : chosen)
@@ -264,12 +277,28 @@ std::size_t CountInvalidCells(const CurvedMesh& mesh, const std::vector<Point2>&
   return invalid;
 }
 
+/// Order 2: brings what untangling moved back to quadratics (QuadraticForm.h) and certifies the
+/// cells again, since the nearest quadratics are not the equilibrium untangling proved valid.
+void CertifyQuadraticForm(CurvedMesh& mesh, UntanglingResult& untangled)
+{
+  MakeQuadraticForm(mesh);
+  untangled.InvalidCells.clear();
+  for (std::size_t c = 0; c < mesh.Cells.size(); ++c)
+    if (ClassifyValidity(mesh.Cell(c)) != Validity::Valid)
+      untangled.InvalidCells.push_back(c);
+  untangled.Valid = untangled.InvalidCells.empty();
+}
+
 } // namespace
 
 CurvingResult CurveMesh(
   const SimplexMesh& linear, const CurvingParameters& parameters, const ProgressObserver& observer)
 {
   ValidateLinearMesh(linear);
+  if (parameters.Order != 2 && parameters.Order != 3)
+  {
+    throw std::invalid_argument("the curved cells' order must be 2 or 3, not " + std::to_string(parameters.Order));
+  }
   if (!(parameters.MinimumCornerAngle >= 0.0 && parameters.MinimumCornerAngle < 180.0))
   {
     throw std::invalid_argument("the minimum corner angle must be in [0, 180) degrees, not " +
@@ -306,7 +335,9 @@ CurvingResult CurveMesh(
     result.CornerAngleBound = std::min(parameters.MinimumCornerAngle, SmallestStraightCornerAngle(result.Mesh));
   std::vector<CurvePiece> pieces = SmoothInterfaces(result.Linear, result.Mesh, chains, parameters);
   // C1 survives one rotation of both handles at a joint; C2 (second derivatives) would not.
-  if (result.CornerAngleBound > 0.0 && parameters.Smoothing.Continuity == Smoothness::C1)
+  if (result.CornerAngleBound > 0.0 && parameters.Order == 2)
+    result.HandlesTurnedForCorners = PullQuadraticsToKeepCorners(result.Linear, pieces, result.CornerAngleBound);
+  else if (result.CornerAngleBound > 0.0 && parameters.Smoothing.Continuity == Smoothness::C1)
     result.HandlesTurnedForCorners = TurnHandlesToKeepCorners(result.Linear, chains, pieces, result.CornerAngleBound);
   result.NumberOfCurvedEdges = pieces.size();
   result.Timings.push_back({ "smooth boundaries", SecondsSince(start) });
@@ -362,8 +393,10 @@ CurvingResult CurveMesh(
       return observer.Report(stage, 0.05 + 0.85 * (done + (next - done) * fraction));
     };
     result.Mesh = straight;
-    const UntanglingResult untangled =
+    UntanglingResult untangled =
       UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling, untangling);
+    if (parameters.Order == 2)
+      CertifyQuadraticForm(result.Mesh, untangled);
     result.UntanglingSteps = untangled.Steps;
     result.UntanglingRounds = round + 1;
     result.Timings.push_back({ "untangle", SecondsSince(start) });
@@ -408,6 +441,8 @@ CurvingResult CurveMesh(
       }
     result.Mesh = straight;
     UntangleControlNets(result.Mesh, Targets(result.Linear, pieces), parameters.Untangling);
+    if (parameters.Order == 2)
+      MakeQuadraticForm(result.Mesh);
     result.StraightenedForScaledJacobian = result.CellsBelowScaledJacobian > 0;
     result.StraightenedForCornerAngle = result.CellsBelowCornerAngle > 0;
     result.StraightenedForValidity = invalidAfterRounds;

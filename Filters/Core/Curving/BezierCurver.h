@@ -30,6 +30,7 @@
 #include "Curving/ElasticUntangler.h"
 #include "Curving/InterfaceChains.h"
 #include "Curving/JacobianBound.h"
+#include "Curving/QuadraticForm.h"
 #include "Support/ProgressObserver.h"
 #include "Support/StageClock.h"
 #include "Mesh/SimplexMesh.h"
@@ -85,6 +86,13 @@ struct CurvingParameters
   /// halves angles of the linear mesh); the chains turn at them instead (EarVertices). 0: corner
   /// angles are measured only, and ears are split (BoundaryEars.h).
   double MinimumCornerAngle = 0.0;
+  /// 3: cubic Bézier triangles. 2: every cell is exactly a quadratic triangle (6 nodes), held in
+  /// the cubic form the proofs work on (QuadraticForm.h): each fitted curve is replaced by its
+  /// nearest quadratic, refitted on its own (BoundaryFit.h), shortened as one (CurvePieces.h),
+  /// pulled towards its chord where a corner needs it instead of having its handles turned
+  /// (CornerHandles.h), and what untangling moves is brought back to quadratics before every
+  /// certificate.
+  int Order = 3;
 };
 
 struct CurvingResult
@@ -97,7 +105,8 @@ struct CurvingResult
   /// apexes of ears (BoundaryEars.h), which are then not split.
   std::size_t EarCorners = 0;
   /// With a corner angle bound and C1 curves: chain vertices whose handles were turned towards
-  /// their chords to keep it (CornerHandles.h).
+  /// their chords to keep it (CornerHandles.h); with Order 2, quadratic pieces pulled towards
+  /// their chords for it.
   std::size_t HandlesTurnedForCorners = 0;
   CurvedMesh Mesh;
   /// Per cell: proven lower and upper bounds of det J (same order as Mesh.Cells).
@@ -141,7 +150,7 @@ struct CurvingResult
 
 /// Curves `linear` (Dimension 2, counter-clockwise triangles in the x-y plane).
 /// Throws std::invalid_argument for bad input (not 2D, no cells, inverted or
-/// degenerate triangles) and AbortRequested when `observer` says stop. An
+/// degenerate triangles, an order other than 2 or 3) and AbortRequested when `observer` says stop. An
 /// untangling failure is not an exception: Valid is false and InvalidCells
 /// lists the cells, so that callers can report and mark them.
 CurvingResult CurveMesh(const SimplexMesh& linear, const CurvingParameters& parameters,

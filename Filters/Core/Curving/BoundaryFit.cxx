@@ -246,4 +246,49 @@ std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices,
   return out;
 }
 
+std::vector<std::array<Point2, 2>> FitQuadraticSegments(const std::vector<Point2>& vertices, bool closed,
+  const std::vector<BoundarySample>& samples, const std::vector<std::array<Point2, 2>>& initial,
+  const FitOptions& options)
+{
+  const ChainGeometry chain{ vertices, closed };
+  std::vector<std::array<Point2, 2>> out(initial.size());
+  std::vector<std::vector<const BoundarySample*>> bySegment(initial.size());
+  for (const BoundarySample& sample : samples)
+    if (sample.Segment < bySegment.size())
+      bySegment[sample.Segment].push_back(&sample);
+  for (std::size_t s = 0; s < initial.size(); ++s)
+  {
+    const Point2& a = vertices[chain.Start(s)];
+    const Point2& b = vertices[chain.End(s)];
+    const Point2 prior = NearestQuadraticControl(a, initial[s][0], initial[s][1], b);
+    const double c = chain.Chord(s);
+    Point2 q = prior;
+    std::vector<double> t;
+    for (const BoundarySample* sample : bySegment[s])
+      t.push_back(sample->Parameter);
+    for (int round = 0; !t.empty() && round <= options.ParameterCorrections; ++round)
+    {
+      // Normal equations of the one unknown q (both coordinates alike), plus the pull to the prior.
+      const double pull = options.Regularisation * c * c;
+      double weight = pull;
+      Point2 sum{ pull * prior[0], pull * prior[1] };
+      for (std::size_t k = 0; k < t.size(); ++k)
+      {
+        const double u = 1.0 - t[k], w = 2.0 * t[k] * u;
+        for (int d = 0; d < 2; ++d)
+          sum[d] += w * (bySegment[s][k]->Point[d] - u * u * a[d] - t[k] * t[k] * b[d]);
+        weight += w * w;
+      }
+      q = { sum[0] / weight, sum[1] / weight };
+      if (round == options.ParameterCorrections)
+        break;
+      const std::array<Point2, 2> inner = ElevateQuadratic(a, q, b);
+      for (std::size_t k = 0; k < t.size(); ++k)
+        t[k] = Reproject({ a, inner[0], inner[1], b }, bySegment[s][k]->Point, t[k]);
+    }
+    out[s] = ElevateQuadratic(a, q, b);
+  }
+  return out;
+}
+
 } // namespace labelmesher

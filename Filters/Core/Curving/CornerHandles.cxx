@@ -112,4 +112,52 @@ std::size_t TurnHandlesToKeepCorners(const SimplexMesh& linear, const std::vecto
   return turned;
 }
 
+std::size_t PullQuadraticsToKeepCorners(const SimplexMesh& linear, std::vector<CurvePiece>& pieces, double bound)
+{
+  std::vector<std::vector<std::size_t>> cellsAt(linear.Points.size());
+  for (std::size_t c = 0; c < linear.NumberOfCells(); ++c)
+    for (int k = 0; k < 3; ++k)
+      cellsAt[static_cast<std::size_t>(linear.Cell(c)[k])].push_back(c);
+  const double limit = (bound + kMarginDegrees) * kDegree;
+  std::size_t pulled = 0;
+  for (CurvePiece& piece : pieces)
+  {
+    if (!piece.Quadratic)
+      continue;
+    const Point2 a{ linear.Points[piece.From][0], linear.Points[piece.From][1] };
+    const Point2 b{ linear.Points[piece.To][0], linear.Points[piece.To][1] };
+    const Point2 middle{ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]) };
+    const Point2 q = NearestQuadraticControl(a, piece.Fitted[0], piece.Fitted[1], b);
+    // The turns each end's tangent may make; a straight edge (turn 0) is always allowed, as the
+    // linear mesh keeps the bound (the margin aside).
+    std::array<double, 2> low{}, high{};
+    AllowedTurns(linear, cellsAt[static_cast<std::size_t>(piece.From)], piece.From, piece.To, limit, low[0], high[0]);
+    AllowedTurns(linear, cellsAt[static_cast<std::size_t>(piece.To)], piece.To, piece.From, limit, low[1], high[1]);
+    auto keeps = [&](double s) {
+      const Point2 control{ middle[0] + s * (q[0] - middle[0]), middle[1] + s * (q[1] - middle[1]) };
+      for (int end = 0; end < 2; ++end)
+      {
+        const Point2& v = end == 0 ? a : b;
+        const Point2& w = end == 0 ? b : a;
+        const Point2 chord{ w[0] - v[0], w[1] - v[1] }, tangent{ control[0] - v[0], control[1] - v[1] };
+        const double turn = std::atan2(Cross(chord, tangent), Dot(chord, tangent));
+        if (turn < std::min(low[end], 0.0) || turn > std::max(high[end], 0.0))
+          return false;
+      }
+      return true;
+    };
+    // The largest of 1, 0.9, ..., 0.1, 0 that keeps both ends (the tangents turn towards the chord
+    // as the control point moves towards its midpoint).
+    int tenths = 10;
+    while (tenths > 0 && !keeps(tenths / 10.0))
+      --tenths;
+    if (tenths == 10)
+      continue;
+    const double s = tenths / 10.0;
+    piece.Fitted = ElevateQuadratic(a, { middle[0] + s * (q[0] - middle[0]), middle[1] + s * (q[1] - middle[1]) }, b);
+    ++pulled;
+  }
+  return pulled;
+}
+
 } // namespace labelmesher

@@ -20,6 +20,7 @@
  */
 
 #include "Curving/CurvePieces.h"
+#include "Curving/QuadraticForm.h"
 #include "Curving/InterfaceChains.h"
 #include "Mesh/SimplexMesh.h"
 
@@ -34,6 +35,14 @@ namespace labelmesher
 /// more; where none exists they stay as fitted. Returns the vertices turned.
 std::size_t TurnHandlesToKeepCorners(const SimplexMesh& linear, const std::vector<InterfaceChain>& chains,
   std::vector<CurvePiece>& pieces, double bound);
+
+/// The quadratic analogue (CurvingParameters::Order 2): a quadratic's one control point sets the
+/// tangents at both ends, so no rotation at a vertex can turn one without the other; instead each
+/// quadratic piece whose ends leave a corner below `bound` degrees (the cells' other edges taken
+/// as their chords) has its control point pulled towards its chord's midpoint, to the largest of
+/// 1, 0.9, ..., 0 of its offset that keeps both ends, which turns both tangents towards the chord.
+/// Returns the pieces pulled.
+std::size_t PullQuadraticsToKeepCorners(const SimplexMesh& linear, std::vector<CurvePiece>& pieces, double bound);
 
 } // namespace labelmesher
 

@@ -46,14 +46,21 @@ std::array<Point2, 4> CurvePiece::ControlPoints(const SimplexMesh& linear) const
   for (int k = 0; k < 2; ++k)
   {
     const Point2& end = k == 0 ? a : b;
-    if (Scale > 0.0)
+    const double w = (k + 1) / 3.0;
+    const Point2 third{ a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1]) };
+    if (Scale > 0.0 && Quadratic)
+    {
+      // Both inner points move with the one quadratic control point: from the thirds (its
+      // midpoint) towards the fitted ones, so that the piece stays a quadratic.
+      p[k + 1] = { third[0] + Scale * (Fitted[k][0] - third[0]), third[1] + Scale * (Fitted[k][1] - third[1]) };
+    }
+    else if (Scale > 0.0)
     {
       p[k + 1] = { end[0] + Scale * (Fitted[k][0] - end[0]), end[1] + Scale * (Fitted[k][1] - end[1]) };
     }
     else
     {
-      const double w = (k + 1) / 3.0;
-      p[k + 1] = { a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1]) };
+      p[k + 1] = third;
     }
   }
   return p;

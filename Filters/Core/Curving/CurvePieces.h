@@ -13,6 +13,9 @@
  * and C1 (C2) holds where neither was shortened. At s = 0 the piece is
  * straight with its control points at the thirds (a straight edge whose end
  * derivatives do not vanish, so that its cells stay provably valid).
+ * A quadratic piece (CurvingParameters::Order 2, QuadraticForm.h) scales its one
+ * control point towards the chord's midpoint instead, m + s (q − m): the piece
+ * stays a quadratic at every scale, and at s = 0 it is the same straight edge.
  */
 
 #include "Curving/CubicTriangle.h"
@@ -34,6 +37,8 @@ struct CurvePiece
   std::int32_t Left = 0;  ///< material on the left of From → To
   std::int32_t Right = 0; ///< material on the right
   double Scale = 1.0;
+  /// Fitted is an elevated quadratic, and scales as one (see above).
+  bool Quadratic = false;
 
   /// The four control points at the current scale, From first.
   std::array<Point2, 4> ControlPoints(const SimplexMesh& linear) const;

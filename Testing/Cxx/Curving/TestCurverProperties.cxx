@@ -134,9 +134,61 @@ TEST(CurverPropertiesRegression, SeedsThatOnceFailed)
   }
 }
 
+/// Order 2 (`labelmesher mesh --order 2` of a 2D image): quadratic triangles on other seeds, with
+/// every guarantee above and each cell exactly quadratic; C1 fitting (the mesh command's default)
+/// and C2 drawn as for cubic cells.
+class QuadraticTriangleProperties : public ::testing::TestWithParam<int>
+{
+};
+
+constexpr std::uint64_t kFirstQuadraticSeed = 7400;
+
+TEST_P(QuadraticTriangleProperties, ValidQuadraticWithinBoundsOnRandomImages)
+{
+  const std::uint64_t first = kFirstQuadraticSeed + static_cast<std::uint64_t>(GetParam()) * kImagesPerShard;
+  std::size_t shortened = 0, pieces = 0;
+  for (std::uint64_t seed = first; seed < first + kImagesPerShard; ++seed)
+  {
+    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, 2, mesher);
+    const Smoothness smoothness = testing::DrawSmoothness(seed);
+    testing::CurverRun run;
+    const auto violated = testing::ViolatedCurverGuarantees(
+      random.Image, mesher, decimation, smoothness, &run, testing::kCurvedScaledJacobian, -1.0, 2);
+    ASSERT_TRUE(violated.empty()) << "seed " << seed << ", h = " << mesher.ImageToMeshDistance << "/"
+                                  << mesher.MeshToImageDistance << ", angle " << decimation.MinimumAngle << ", C"
+                                  << static_cast<int>(smoothness) << ", order 2\n"
+                                  << Violations(violated) << random.Describe();
+    shortened += run.Result.ShortenedPieces;
+    pieces += run.Result.Pieces.size();
+  }
+  std::cout << "[ curver ] order 2, seeds " << first << "-" << first + kImagesPerShard - 1 << ": " << shortened
+            << " of " << pieces << " pieces shortened\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Shards, QuadraticTriangleProperties, ::testing::Range(0, 2));
+
+/// The quadratic-form check can fail: cubic cells (the curver's order 3) are not quadratic.
+TEST(CurverPropertiesCheck, CubicCellsFailTheQuadraticCheck)
+{
+  int found = 0;
+  for (std::uint64_t seed = kFirstQuadraticSeed; seed < kFirstQuadraticSeed + 20 && found == 0; ++seed)
+  {
+    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher,
+      testing::DrawDecimationParameters(seed, 2, mesher), Smoothness::C1, nullptr, testing::kCurvedScaledJacobian,
+      -1.0, 3, 2);
+    for (const std::string& line : violated)
+      found += line.find("not a quadratic triangle") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_GT(found, 0) << "no cubic mesh of the sample failed the quadratic check";
+}
+
 /// Smooth shapes, C1 with the default bounds of 2 voxels: all guarantees, and
 /// fewer misclassified pixels than the linear mesh, shape by shape and in sum.
-TEST(CurverAccuracy, CurvedBeatsLinearOnSmoothShapes)
+void ExpectCurvedBeatsLinearOnSmoothShapes(int order)
 {
   MesherParameters mesher;
   mesher.ImageToMeshDistance = 2.0;
@@ -153,16 +205,28 @@ TEST(CurverAccuracy, CurvedBeatsLinearOnSmoothShapes)
       ? testing::MakeTouchingBlobs2D(n + 16, n, 1, 2, n * draw.Real(0.2, 0.3), draw.Real(0.6, 0.9))
       : testing::MakeEllipse(n, n, n * draw.Real(0.2, 0.45), n * draw.Real(0.15, 0.3), draw.Real(0.0, 180.0));
     testing::CurverRun run;
-    const auto violated = testing::ViolatedCurverGuarantees(image, mesher, decimation, Smoothness::C1, &run);
+    const auto violated = testing::ViolatedCurverGuarantees(
+      image, mesher, decimation, Smoothness::C1, &run, testing::kCurvedScaledJacobian, -1.0, order);
     ASSERT_TRUE(violated.empty()) << "shape " << seed << "\n" << Violations(violated);
     EXPECT_LT(run.MisclassifiedCurved, run.MisclassifiedLinear) << "shape " << seed;
     linearTotal += run.MisclassifiedLinear;
     curvedTotal += run.MisclassifiedCurved;
   }
-  std::cout << "[ curver ] smooth shapes: misclassified pixels linear " << linearTotal << ", curved " << curvedTotal
+  std::cout << "[ curver ] order " << order << ", smooth shapes: misclassified pixels linear " << linearTotal << ", curved " << curvedTotal
             << "\n";
   // A clear margin: at least a third fewer.
   EXPECT_LE(3 * curvedTotal, 2 * linearTotal);
+}
+
+TEST(CurverAccuracy, CurvedBeatsLinearOnSmoothShapes)
+{
+  ExpectCurvedBeatsLinearOnSmoothShapes(3);
+}
+
+/// Quadratic triangles too: the issue asks at least 30 % fewer on smooth shapes; a third is asserted.
+TEST(CurverAccuracy, QuadraticBeatsLinearOnSmoothShapes)
+{
+  ExpectCurvedBeatsLinearOnSmoothShapes(2);
 }
 
 } // namespace

@@ -22,8 +22,10 @@ Smoothness DrawSmoothness(std::uint64_t seed)
 
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run, double curverScaledJacobian,
-  double curverCornerAngle)
+  double curverCornerAngle, int curverOrder, int assertedOrder)
 {
+  if (assertedOrder == 0)
+    assertedOrder = curverOrder;
   std::vector<std::string> violated;
   auto fail = [&violated](const std::string& what) { violated.push_back(what); };
   CurverRun local;
@@ -38,6 +40,7 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
   parameters.Bounds.MeshToImage = mesher.MeshToImageDistance;
   parameters.MinimumScaledJacobian = curverScaledJacobian;
   parameters.MinimumCornerAngle = curverCornerAngle < 0.0 ? decimation.MinimumAngle : curverCornerAngle;
+  parameters.Order = curverOrder;
   try
   {
     out.Linear = ForegroundMesh(DecimateMesh(image, MeshLabelImage(image, mesher).Mesh, decimation).Mesh);
@@ -85,11 +88,27 @@ std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const
     }
   }
 
+  // Quadratic triangles: each cell is one, and its six nodes give the same map.
+  if (assertedOrder == 2)
+  {
+    for (std::size_t c = 0; c < result.Mesh.Cells.size(); ++c)
+    {
+      const CubicTriangle cell = result.Mesh.Cell(c);
+      const double off = QuadraticNodesMismatch(cell);
+      if (!(off <= 1e-9 * (1.0 + image.Dimensions[0] + image.Dimensions[1])))
+      {
+        fail("cell " + std::to_string(c) + " is not a quadratic triangle: its 6-node map is " + std::to_string(off) +
+          " off at a sample");
+        break;
+      }
+    }
+  }
+
   // Continuity at every joint, as far as the pieces' scales promise it.
   const JointContinuity joints =
     MeasureJointContinuity(result.Linear, result.Mesh, parameters.Border, smoothness, result.Pieces,
       parameters.MinimumCornerAngle > 0.0);
-  if (!(joints.FirstDerivativeMismatch < 1e-9) || !(joints.SecondDerivativeMismatch < 1e-9))
+  if (assertedOrder != 2 && (!(joints.FirstDerivativeMismatch < 1e-9) || !(joints.SecondDerivativeMismatch < 1e-9)))
   {
     std::ostringstream what;
     what << "joint continuity: first-derivative mismatch " << joints.FirstDerivativeMismatch << ", second "

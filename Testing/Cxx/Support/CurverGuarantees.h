@@ -5,8 +5,9 @@
 /**
  * @file CurverGuarantees.h
  * Every guarantee of the curved 2D mesh on one image, through the whole
- * pipeline of `labelmesher curve`: mesher, decimator, foreground, curver with
- * the image and the mesher's distance bounds. Asserted independently of the
+ * pipeline of `labelmesher curve` (and of a 2D `labelmesher mesh --order 2`:
+ * quadratic triangles): mesher, decimator, foreground, curver with the image
+ * and the mesher's distance bounds. Asserted independently of the
  * curver's own tests: det J sampled densely on every cell proven valid,
  * continuity at every joint on the output control points (CurvingChecks.h),
  * both distance bounds per material measured on the curves, no crossing
@@ -50,9 +51,15 @@ constexpr double kCurvedScaledJacobian = 0.1;
 /// MinimumAngle, what `labelmesher curve` asks): every corner angle of the
 /// curved cells, measured from points evaluated along the edges, is asserted
 /// at least the decimation's MinimumAngle whatever the curver is asked.
+/// `curverOrder` is the curver's CurvingParameters::Order; `assertedOrder` 2 also asserts that every
+/// cell is exactly a quadratic triangle (its control points those of an elevated quadratic, and
+/// the 6-node triangle of its corners and mid-nodes the same map at dense points), and skips the
+/// joints' C1/C2 continuity (quadratics meet with G0 only); it is the curver's order unless given
+/// (the tests ask a cubic curver for it, to show that check can fail).
 std::vector<std::string> ViolatedCurverGuarantees(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, Smoothness smoothness, CurverRun* run = nullptr,
-  double curverScaledJacobian = kCurvedScaledJacobian, double curverCornerAngle = -1.0);
+  double curverScaledJacobian = kCurvedScaledJacobian, double curverCornerAngle = -1.0, int curverOrder = 3,
+  int assertedOrder = 0);
 
 } // namespace testing
 } // namespace labelmesher

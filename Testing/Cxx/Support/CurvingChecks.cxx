@@ -73,6 +73,33 @@ double SampledJacobianRatio(const CubicTriangle& triangle, int n)
   return maximum > 0.0 ? minimum / maximum : 0.0;
 }
 
+double QuadraticNodesMismatch(const CubicTriangle& triangle, int n)
+{
+  // Nodes in VTK_QUADRATIC_TRIANGLE order: corners, then the middles of edges 0-1, 1-2, 2-0.
+  std::array<Point2, 6> nodes;
+  for (int k = 0; k < 3; ++k)
+    nodes[static_cast<std::size_t>(k)] = triangle.ControlPoints[static_cast<std::size_t>(k)];
+  nodes[3] = EvaluateCubicTriangle(triangle, 0.5, 0.5, 0.0);
+  nodes[4] = EvaluateCubicTriangle(triangle, 0.0, 0.5, 0.5);
+  nodes[5] = EvaluateCubicTriangle(triangle, 0.5, 0.0, 0.5);
+  double largest = 0.0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j)
+    {
+      const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n, w = 1.0 - u - v;
+      // Lagrange basis of degree 2: l (2 l - 1) at the corners, 4 l l' at the edge middles.
+      const std::array<double, 6> basis{ u * (2 * u - 1), v * (2 * v - 1), w * (2 * w - 1), 4 * u * v, 4 * v * w,
+        4 * w * u };
+      Point2 quadratic{ 0.0, 0.0 };
+      for (std::size_t k = 0; k < 6; ++k)
+        for (std::size_t a = 0; a < 2; ++a)
+          quadratic[a] += basis[k] * nodes[k][a];
+      const Point2 cubic = EvaluateCubicTriangle(triangle, u, v, w);
+      largest = std::max(largest, std::hypot(quadratic[0] - cubic[0], quadratic[1] - cubic[1]));
+    }
+  return largest;
+}
+
 double SampledCornerAngle(const CubicTriangle& triangle)
 {
   // Along an edge from its corner, P(s) - P(0) = a s + b s^2 + c s^3, so

@@ -33,6 +33,11 @@ double SampledJacobianRatio(const CubicTriangle& triangle, int n = 24);
 double SampledCornerAngle(const CubicTriangle& triangle);
 constexpr double kCornerAngleTolerance = 1e-6;
 
+/// The largest distance, over a barycentric grid of `n` steps per side, between the cell's map and
+/// the 6-node quadratic (Lagrange) triangle through its corners and its edges' points at their
+/// middle: 0 (up to rounding) exactly when the cell is a quadratic triangle written as a cubic.
+double QuadraticNodesMismatch(const CubicTriangle& triangle, int n = 12);
+
 struct JointContinuity
 {
   std::size_t Joints = 0;

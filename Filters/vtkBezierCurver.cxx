@@ -187,29 +187,57 @@ bool PlaceImage(vtkImageData* imageData, vtkDataArray* labels, const PlaneAxes& 
   return true;
 }
 
-/// Pass 4: the Bézier cells back in 3D, with their proven Jacobian bounds.
-void PackBezierCells(const labelmesher::CurvingResult& result, const PlaneAxes& plane, vtkUnstructuredGrid* output)
+/// Pass 4: the Bézier cells back in 3D (order 3), or as quadratic triangles (order 2, exact), with
+/// their proven Jacobian bounds.
+void PackBezierCells(
+  const labelmesher::CurvingResult& result, const PlaneAxes& plane, int order, vtkUnstructuredGrid* output)
 {
   const labelmesher::CurvedMesh& curved = result.Mesh;
+  const auto& control = curved.ControlPoints;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(curved.ControlPoints.size()));
-  for (std::size_t p = 0; p < curved.ControlPoints.size(); ++p)
-  {
+  auto setPoint = [&plane, &points](std::int64_t id, const labelmesher::Point2& p) {
     double x[3];
-    x[plane.Axes[0]] = curved.ControlPoints[p][0];
-    x[plane.Axes[1]] = curved.ControlPoints[p][1];
+    x[plane.Axes[0]] = p[0];
+    x[plane.Axes[1]] = p[1];
     x[plane.Normal] = plane.Offset;
-    points->SetPoint(static_cast<vtkIdType>(p), x);
-  }
+    points->SetPoint(static_cast<vtkIdType>(id), x);
+  };
   std::vector<std::int64_t> connectivity;
-  connectivity.reserve(10 * curved.Cells.size());
-  for (const auto& cell : curved.Cells)
+  if (order == 2)
   {
-    connectivity.insert(connectivity.end(), cell.begin(), cell.end());
+    // Six nodes: the vertices (same ids), then one mid-node per edge, its curve's point at t = 1/2.
+    points->SetNumberOfPoints(static_cast<vtkIdType>(curved.NumberOfVertices + curved.EdgeControlPoints.size()));
+    for (std::int64_t v = 0; v < curved.NumberOfVertices; ++v)
+      setPoint(v, control[static_cast<std::size_t>(v)]);
+    std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> midNode;
+    std::int64_t next = curved.NumberOfVertices;
+    for (const auto& [edge, ids] : curved.EdgeControlPoints)
+    {
+      setPoint(next, labelmesher::CubicMidpoint(control[edge.first], control[ids[0]], control[ids[1]], control[edge.second]));
+      midNode[edge] = next++;
+    }
+    connectivity.reserve(6 * curved.Cells.size());
+    for (const auto& cell : curved.Cells)
+    {
+      connectivity.insert(connectivity.end(), cell.begin(), cell.begin() + 3);
+      for (int e = 0; e < 3; ++e)
+        connectivity.push_back(midNode.at({ std::min(cell[e], cell[(e + 1) % 3]), std::max(cell[e], cell[(e + 1) % 3]) }));
+    }
+    output->SetPoints(points);
+    output->SetCells(VTK_QUADRATIC_TRIANGLE, labelmesher::MakeCellArray(connectivity, 6));
   }
-  output->SetPoints(points);
-  output->SetCells(VTK_BEZIER_TRIANGLE, labelmesher::MakeCellArray(connectivity, 10));
+  else
+  {
+    points->SetNumberOfPoints(static_cast<vtkIdType>(control.size()));
+    for (std::size_t p = 0; p < control.size(); ++p)
+      setPoint(static_cast<std::int64_t>(p), control[p]);
+    connectivity.reserve(10 * curved.Cells.size());
+    for (const auto& cell : curved.Cells)
+      connectivity.insert(connectivity.end(), cell.begin(), cell.end());
+    output->SetPoints(points);
+    output->SetCells(VTK_BEZIER_TRIANGLE, labelmesher::MakeCellArray(connectivity, 10));
+  }
 
   const auto cells = static_cast<vtkIdType>(curved.Cells.size());
   vtkNew<vtkIntArray> material;
@@ -353,6 +381,7 @@ int vtkBezierCurver::RequestData(
   parameters.Untangling.QualityIterations = this->QualityIterations;
   parameters.MinimumScaledJacobian = this->MinimumScaledJacobian;
   parameters.MinimumCornerAngle = this->MinimumCornerAngle;
+  parameters.Order = this->Order;
   labelmesher::LabelImage image;
   std::array<double, 6> pixelToMesh{ 0, 1, 0, 0, 0, 1 };
   if (imageData &&
@@ -393,7 +422,7 @@ int vtkBezierCurver::RequestData(
                     << this->MinimumCornerAngle << " asked for: the curved cells keep " << result.CornerAngleBound
                     << " (field data CornerAngleBound).");
   }
-  PackBezierCells(result, plane, output);
+  PackBezierCells(result, plane, this->Order, output);
   vtkFieldData* fd = output->GetFieldData();
   PassMaterialTable(input->GetFieldData(), fd);
   AddScalarField(fd, arrays::Smoothness, this->Smoothness);
@@ -402,6 +431,7 @@ int vtkBezierCurver::RequestData(
   AddScalarField(fd, arrays::MaximumShorteningRounds, this->MaximumShorteningRounds);
   AddScalarField(fd, arrays::QualityIterations, this->QualityIterations);
   AddScalarField(fd, arrays::MinimumScaledJacobianBound, this->MinimumScaledJacobian);
+  AddScalarField(fd, arrays::Order, this->Order);
   AddCurvingCounts(fd, result);
 
   // ---- (5) accuracy against the image ----
@@ -438,6 +468,7 @@ void vtkBezierCurver::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Smoothness: C" << this->Smoothness << "\n";
+  os << indent << "Order: " << this->Order << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaximumUntanglingSteps: " << this->MaximumUntanglingSteps << "\n";
   os << indent << "MaximumShorteningRounds: " << this->MaximumShorteningRounds << "\n";

@@ -53,7 +53,8 @@
  *
  * Output: vtkUnstructuredGrid of VTK_BEZIER_TRIANGLE cells of degree 3 (10 points
  * each in VTK's order; edge points shared by neighbouring cells), which ParaView
- * renders curved. Cell data:
+ * renders curved; with Order 2, VTK_QUADRATIC_TRIANGLE cells (6 nodes, mid-nodes
+ * shared). Cell data:
  * - `Material` (int): copied from the input;
  * - `MinimumJacobian` (double): proven lower bound of det J over the cell, J the
  *   Jacobian of the map from the reference triangle (0,0), (1,0), (0,1) to the
@@ -233,6 +234,22 @@ public:
   vtkGetMacro(MeshToImageDistance, double);
   ///@}
 
+  ///@{
+  /**
+   * Order of the output cells: 3 (default), cubic Bézier triangles
+   * (VTK_BEZIER_TRIANGLE, 10 points); 2, quadratic triangles
+   * (VTK_QUADRATIC_TRIANGLE, 6 points: corners, then the mid-nodes of edges
+   * 0-1, 1-2, 2-0, on the curves at their middle), as finite-element solvers
+   * take them (Abaqus CPS6, Gmsh's 6-node triangle). Every curve is then a
+   * quadratic (one control point per edge, the one nearest to the fitted
+   * cubic), shortened towards its chord's midpoint, and the cells carry the
+   * same proofs: they are certified in their exact cubic form (degree
+   * elevation). Field data `Order`.
+   */
+  vtkSetClampMacro(Order, int, 2, 3);
+  vtkGetMacro(Order, int);
+  ///@}
+
   /**
    * The optional label image (port 1): the border, the fit, the bounds and accuracy.
    */
@@ -255,6 +272,7 @@ protected:
   double MinimumCornerAngle = 15.0;
   double ImageToMeshDistance = -1.0;
   double MeshToImageDistance = -1.0;
+  int Order = 3;
 
 private:
   vtkBezierCurver(const vtkBezierCurver&) = delete;

@@ -229,19 +229,21 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkErrorMacro("Curving needs a 2D image (one extent of a single slice); this image is 3D.");
     return 1;
   }
-  if (this->Order == 2 && (GetImageDimension(input) != 3 || !this->Decimate || this->Curve))
+  if (this->Order == 2 && (!this->Decimate || this->Curve))
   {
-    vtkErrorMacro("Quadratic cells (Order 2) need a 3D image and decimation (2D images are curved into cubic "
-                  "cells with Curve).");
+    vtkErrorMacro("Quadratic cells (Order 2) curve the decimated mesh: they need Decimate, and not Curve (which "
+                  "makes cubic cells).");
     return 1;
   }
 
+  // Order 2 of a 2D image is the curver's, making quadratic triangles.
+  const bool curve = this->Curve || (this->Order == 2 && GetImageDimension(input) == 2);
   const double meshWeight = this->Decimate ? kMeshAndDecimateWeight : kMeshWeight;
-  const double meshShare = meshWeight / (meshWeight + (this->Curve ? kCurveWeight : 0.0));
+  const double meshShare = meshWeight / (meshWeight + (curve ? kCurveWeight : 0.0));
   const bool meshed = this->Decimate
     ? this->MeshAndDecimate(input, this->GetInputArrayToProcess(0, inputVector), output, interfaces, curved, meshShare)
     : this->MeshOnly(input, output, interfaces, meshShare);
-  if (meshed && this->Curve && !this->CurveMesh(input, output, curved, meshShare))
+  if (meshed && curve && !this->CurveMesh(input, output, curved, meshShare))
   {
     // Stopped or failed while curving: the run is not done, and a linear mesh alone is not what
     // was asked for.
@@ -301,6 +303,7 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
   curver->SetMinimumScaledJacobian(this->MinimumScaledJacobian);
   // The corners keep the angle the linear mesh was asked for (the mesher's own mesh holds more).
   curver->SetMinimumCornerAngle(this->MinimumAngle);
+  curver->SetOrder(this->Order == 2 ? 2 : 3);
   // Copies, so that the inner pipeline leaves this filter's output and input alone.
   vtkNew<vtkUnstructuredGrid> mesh;
   mesh->ShallowCopy(linear);
@@ -348,7 +351,8 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
   const auto blockCells = static_cast<std::uint64_t>(std::max<vtkIdType>(0, this->BlockCells));
   labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
-  if (this->Order == 2)
+  const bool quadratic3D = this->Order == 2 && image.Dimension() == 3;
+  if (quadratic3D)
   {
     estimate = labelmesher::WithQuadraticStage(estimate, this->MeasureOutput);
   }
@@ -374,7 +378,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
 
   // Quadratic cells (and their measurement) take a share of the run after the decimation.
   // In order: meshing and decimating, the quadratic cells (Order 2), measuring the linear mesh.
-  const double quadraticShare = this->Order == 2 ? share * 0.2 : 0.0;
+  const double quadraticShare = quadratic3D ? share * 0.2 : 0.0;
   const double runShare = (share - quadraticShare) * (this->MeasureOutput ? 0.8 : 1.0);
   const double measureStart = runShare + quadraticShare;
   labelmesher::StreamedResult result;
@@ -402,7 +406,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
 
   labelmesher::DecimationResult& decimated = result.Decimated;
-  if (this->Order == 2 && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, runShare, quadraticShare, decimated.Timings))
+  if (quadratic3D && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, runShare, quadraticShare, decimated.Timings))
   {
     return false;
   }

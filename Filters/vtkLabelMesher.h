@@ -32,7 +32,11 @@
  * MinimumAngle between the edges' tangents (vtkBezierCurver's
  * MinimumCornerAngle); the cubic Bezier mesh is output port 2.
  *
- * Order 2 (3D images, with Decimate): the decimated mesh becomes quadratic
+ * Order 2 of a 2D image (with Decimate): as Curve, with vtkBezierCurver's
+ * Order 2: quadratic triangles (VTK_QUADRATIC_TRIANGLE) on port 2, carrying the
+ * same certificates as the cubic ones.
+ *
+ * Order 2 of a 3D image (with Decimate): the decimated mesh becomes quadratic
  * tetrahedra (Quadratic/QuadraticCurver.h), output port 2: the mid-nodes of
  * interface edges fitted to the image, every cell's min det J / max det J
  * certified at least MinimumScaledJacobian by the Bernstein coefficients of
@@ -78,8 +82,8 @@
  *
  * @warning Errors (one message) for an image that is not a label image (as
  * vtkLabelOctreeMesher), a MinimumAngle outside (0, GetProvenAngleBound], a
- * run estimated not to fit in memory, Curve on a 3D image, Order 2 on a 2D
- * image or without Decimate (or with Curve), and a curving that
+ * run estimated not to fit in memory, Curve on a 3D image, Order 2
+ * without Decimate (or with Curve), and a curving that
  * fails: the outputs are then empty. A curving whose untangling fails is an
  * error too, but port 2 then holds the curver's marked mesh (cell data Valid),
  * to inspect, and ports 0 and 1 the linear mesh.
@@ -253,8 +257,9 @@ public:
 
   ///@{
   /**
-   * The order of the 3D output on port 2: 1 (default: none) or 2 (quadratic
-   * tetrahedra fitted to the image; 3D images, with Decimate).
+   * The order of the output on port 2: 1 (default: none) or 2 (quadratic
+   * tetrahedra fitted to the image of a 3D image, quadratic triangles of a 2D
+   * one; with Decimate, without Curve).
    */
   vtkSetClampMacro(Order, int, 1, 2);
   vtkGetMacro(Order, int);

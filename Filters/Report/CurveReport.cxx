@@ -14,6 +14,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <string>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -61,6 +62,7 @@ CurveReport MakeCurveReport(const RunReport& linear, vtkUnstructuredGrid* curved
   r.Cells = curved->GetNumberOfCells();
   r.ControlPoints = curved->GetNumberOfPoints();
   vtkFieldData* fd = curved->GetFieldData();
+  r.Order = FieldValue(fd, arrays::Order).value_or(3.0) == 2.0 ? 2 : 3;
   r.Smoothness = static_cast<int>(FieldCount(fd, arrays::Smoothness));
   r.Tension = FieldValue(fd, arrays::Tension).value_or(0.0);
   r.MaximumUntanglingSteps = static_cast<int>(FieldCount(fd, arrays::MaximumUntanglingSteps));
@@ -169,8 +171,9 @@ RunReports MakeRunReports(const RunContext& context, vtkImageData* image, vtkUns
 void PrintCurveSummary(const CurveReport& r, std::ostream& out)
 {
   PrintSummary(r.Linear, out);
-  out << "Curved mesh: " << r.Cells << " cubic Bezier triangles, " << r.ControlPoints
-      << " control points, C" << r.Smoothness << " boundaries (" << r.InterfaceChains
+  out << "Curved mesh: " << r.Cells << (r.Order == 2 ? " quadratic triangles, " : " cubic Bezier triangles, ")
+      << r.ControlPoints << (r.Order == 2 ? " nodes, " : " control points, C" + std::to_string(r.Smoothness))
+      << (r.Order == 2 ? "boundaries fitted as quadratics" : " boundaries") << " (" << r.InterfaceChains
       << " chains, " << r.ClosedInterfaceChains << " closed, " << r.CurvedEdges
       << " curved edges, " << r.SplitEars << " ears split, " << r.EarCorners << " corners at ears)\n";
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("
@@ -273,9 +276,10 @@ void WriteCurveJson(const CurveReport& r, std::ostream& out)
   j.Key("topology_matches").Bool(r.Linear.TopologyMatches());
   j.EndObject();
   j.Key("curved_mesh").BeginObject();
-  j.Key("cell_type").String("bezier_triangle_degree_3");
+  j.Key("cell_type").String(r.Order == 2 ? "quadratic_triangle" : "bezier_triangle_degree_3");
+  j.Key("order").Integer(r.Order);
   j.Key("cells").Integer(r.Cells);
-  j.Key("control_points").Integer(r.ControlPoints);
+  j.Key(r.Order == 2 ? "nodes" : "control_points").Integer(r.ControlPoints);
   j.Key("interface_chains").Integer(r.InterfaceChains);
   j.Key("closed_interface_chains").Integer(r.ClosedInterfaceChains);
   j.Key("curved_edges").Integer(r.CurvedEdges);

@@ -39,6 +39,9 @@ struct CurveReport
   int Smoothness = 2;
   double Tension = 0.0;
   int MaximumUntanglingSteps = 0, MaximumShorteningRounds = 0, QualityIterations = 0;
+  /// 3: cubic Bézier triangles (ControlPoints counts their control points); 2: quadratic
+  /// triangles (ControlPoints counts their nodes).
+  int Order = 3;
   long long Cells = 0, ControlPoints = 0;
   long long InvalidBeforeUntangling = 0, InvalidCells = 0, UntanglingSteps = 0;
   long long InterfaceChains = 0, ClosedInterfaceChains = 0, CurvedEdges = 0, SplitEars = 0, EarCorners = 0;

@@ -6,6 +6,7 @@
 #include "JsonWriter.h"
 
 #include "vtkCellData.h"
+#include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkUnstructuredGrid.h"
@@ -22,7 +23,8 @@ void AddQuadratic(RunReport& report, vtkUnstructuredGrid* quadratic)
   if (!quadratic || quadratic->GetNumberOfCells() == 0)
     return;
   vtkFieldData* fd = quadratic->GetFieldData();
-  if (FieldCount(fd, arrays::Order) != 2)
+  // Quadratic triangles (a 2D image's Order 2) are the curver's and have its report.
+  if (FieldCount(fd, arrays::Order) != 2 || quadratic->GetCellType(0) != VTK_QUADRATIC_TETRA)
     return;
   QuadraticEntry q;
   q.Cells = quadratic->GetNumberOfCells();

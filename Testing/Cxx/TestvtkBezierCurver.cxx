@@ -12,6 +12,7 @@
 #include "vtkMeshDecimator.h"
 #include "vtkLabelOctreeMesher.h"
 
+#include "vtkCell.h"
 #include "vtkCellData.h"
 #include "vtkCellTypes.h"
 #include "vtkDataArray.h"
@@ -25,6 +26,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 namespace arrays = labelmesher::arrays;
 using namespace labelmesher::testing;
@@ -108,6 +112,68 @@ TEST(vtkBezierCurver, CurvesTheMesherOutputIntoValidCubicTrianglesWithItsArrays)
   auto* names = vtkStringArray::SafeDownCast(curved->GetFieldData()->GetAbstractArray(arrays::StageName));
   ASSERT_NE(names, nullptr);
   EXPECT_EQ(names->GetValue(names->GetNumberOfValues() - 1), "curved distances");
+}
+
+/// Order 2: VTK_QUADRATIC_TRIANGLE cells on the input's vertices, shared mid-nodes, and a map that
+/// VTK's own quadratic triangle evaluates with a positive Jacobian whose smallest over largest is
+/// at least the bound at every sample (finite differences of EvaluateLocation).
+TEST(vtkBezierCurver, OrderTwoGivesValidQuadraticTrianglesThatVTKEvaluates)
+{
+  auto image = MakeVtkImage(MakeDiscSliceXZ(32, 11.3), { 0.5, 0.5, 0.5 }, { 1, 2, 3 });
+  vtkNew<vtkLabelOctreeMesher> mesher;
+  mesher->SetInputData(image);
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(0, mesher->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  curver->SetOrder(2);
+  MessageRecorder errors(curver, vtkCommand::ErrorEvent);
+  curver->Update();
+  EXPECT_TRUE(errors.Messages.empty());
+  vtkUnstructuredGrid* curved = curver->GetOutput();
+  vtkNew<vtkCellTypes> types;
+  curved->GetCellTypes(types);
+  ASSERT_EQ(types->GetNumberOfTypes(), 1);
+  EXPECT_EQ(types->GetCellType(0), VTK_QUADRATIC_TRIANGLE);
+  EXPECT_EQ(FieldScalar(curved, arrays::Order), 2.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+  EXPECT_GT(FieldScalar(curved, arrays::CurvedEdges), 0.0);
+  EXPECT_LT(FieldScalar(curved, arrays::MisclassifiedPixelsCurved), FieldScalar(curved, arrays::MisclassifiedPixelsLinear));
+  vtkUnstructuredGrid* linear = mesher->GetOutput();
+  for (vtkIdType p = 0; p < linear->GetNumberOfPoints(); ++p)
+  {
+    double a[3], b[3];
+    linear->GetPoint(p, a);
+    curved->GetPoint(p, b);
+    ASSERT_EQ(std::vector<double>(a, a + 3), std::vector<double>(b, b + 3)) << "vertex " << p << " moved";
+  }
+  // The image lies in y = 2: det J in (x, z), sign fixed by the first sample.
+  double smallestRatio = 1.0, sign = 0.0;
+  for (vtkIdType c = 0; c < curved->GetNumberOfCells(); ++c)
+  {
+    vtkCell* cell = curved->GetCell(c);
+    ASSERT_EQ(cell->GetNumberOfPoints(), 6);
+    double smallest = VTK_DOUBLE_MAX, largest = -VTK_DOUBLE_MAX;
+    constexpr int n = 8;
+    constexpr double h = 1e-6;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j)
+      {
+        double r[3] = { (i + 0.25) / (n + 1.0), (j + 0.25) / (n + 1.0), 0.0 }, x0[3], xr[3], xs[3], w[6];
+        int sub = 0;
+        cell->EvaluateLocation(sub, r, x0, w);
+        double rr[3] = { r[0] + h, r[1], 0.0 }, rs[3] = { r[0], r[1] + h, 0.0 };
+        cell->EvaluateLocation(sub, rr, xr, w);
+        cell->EvaluateLocation(sub, rs, xs, w);
+        const double det = ((xr[0] - x0[0]) * (xs[2] - x0[2]) - (xr[2] - x0[2]) * (xs[0] - x0[0])) / (h * h);
+        if (sign == 0.0)
+          sign = det > 0.0 ? 1.0 : -1.0;
+        smallest = std::min(smallest, sign * det);
+        largest = std::max(largest, sign * det);
+      }
+    ASSERT_GT(smallest, 0.0) << "cell " << c << " inverted where VTK evaluates it";
+    smallestRatio = std::min(smallestRatio, smallest / largest);
+  }
+  EXPECT_GE(smallestRatio, curver->GetMinimumScaledJacobian() - 1e-4);
 }
 
 TEST(vtkBezierCurver, DecimatedAndCurvedIsMoreAccurateThanLinearWithinTheBounds)

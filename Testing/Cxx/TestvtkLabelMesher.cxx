@@ -473,14 +473,15 @@ TEST(vtkLabelMesher, OrderTwoAddsCertifiedQuadraticTetrahedraOnPortTwo)
     ASSERT_GE(corners->GetTuple1(c), mesher->GetMinimumAngle() - 1e-9) << "cell " << c;
 }
 
-TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageOrWithoutDecimationIsOneError)
+TEST(vtkLabelMesher, OrderTwoWithoutDecimationOrWithCurveIsOneError)
 {
-  for (const bool twoDimensional : { true, false })
+  for (const bool curve : { true, false })
   {
     vtkNew<vtkLabelMesher> mesher;
-    mesher->SetInputData(twoDimensional ? MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40)
-                                        : MakeVtkImage(MakeBallLabels(12, 4.0)));
-    mesher->SetDecimate(twoDimensional);
+    mesher->SetInputData(curve ? MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40)
+                               : MakeVtkImage(MakeBallLabels(12, 4.0)));
+    mesher->SetDecimate(curve);
+    mesher->SetCurve(curve);
     mesher->SetOrder(2);
     MessageRecorder errors(mesher, vtkCommand::ErrorEvent);
     mesher->Update();
@@ -489,6 +490,39 @@ TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageOrWithoutDecimationIsOneError
     EXPECT_EQ(mesher->GetOutput()->GetNumberOfCells(), 0);
     EXPECT_EQ(mesher->GetCurvedOutput()->GetNumberOfCells(), 0);
   }
+}
+
+/// A 2D image's Order 2 is the curver's Order 2 on the linear mesh: quadratic triangles whose
+/// mid-nodes lie on the cubic curver's own curves at their middles (the same certificates).
+TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageGivesQuadraticTriangles)
+{
+  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+  vtkNew<vtkLabelMesher> composite;
+  composite->SetInputData(image);
+  composite->SetOrder(2);
+  MessageRecorder errors(composite, vtkCommand::ErrorEvent);
+  composite->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
+
+  vtkNew<vtkLabelMesher> linear;
+  linear->SetInputData(image);
+  vtkNew<vtkBezierCurver> curver;
+  curver->SetInputConnection(0, linear->GetOutputPort(0));
+  curver->SetInputDataObject(1, image);
+  curver->SetOrder(2);
+  curver->Update();
+  vtkUnstructuredGrid* curved = composite->GetCurvedOutput();
+  ASSERT_GT(curved->GetNumberOfCells(), 0);
+  EXPECT_EQ(curved->GetCellType(0), VTK_QUADRATIC_TRIANGLE);
+  EXPECT_TRUE(SameGrid(curved, curver->GetOutput()));
+  EXPECT_TRUE(SameGrid(composite->GetOutput(), linear->GetOutput())) << "port 0 stays the linear mesh";
+  EXPECT_EQ(FieldScalar(curved, arrays::Order), 2.0);
+  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+  // Nodes: the linear mesh's vertices, then one per edge.
+  vtkUnstructuredGrid* mesh = composite->GetOutput();
+  const vtkIdType edges = mesh->GetNumberOfPoints() + mesh->GetNumberOfCells() - 1; // Euler, one disc-like region
+  EXPECT_GE(curved->GetNumberOfPoints(), mesh->GetNumberOfPoints() + edges / 2);
+  EXPECT_GT(FieldScalar(curved, arrays::MisclassifiedPixelsLinear), FieldScalar(curved, arrays::MisclassifiedPixelsCurved));
 }
 
 TEST(vtkLabelMesher, AbortWhileMakingQuadraticCellsEmptiesEveryOutput)

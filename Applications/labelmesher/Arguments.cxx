@@ -216,8 +216,9 @@ const std::vector<Option>& Options()
       [](Reading& r, const std::string& v) { r.Args.Settings.MinimumAngle = ParseAngle(v); } },
     { nullptr, "--order", "1|2", false,
       "mesh: element order; 2 also makes quadratic tetrahedra\n"
-      "fitted to the image (3D, decimated): certified valid,\n"
-      "--min-scaled-jacobian, both distance bounds; written as\n"
+      "(3D) or triangles (2D) fitted to the image (decimated):\n"
+      "certified valid, --min-scaled-jacobian, corners at\n"
+      "--min-angle, both distance bounds; written as\n"
       ".vtu .vtk .msh .inp .mesh                   [default 1]",
       [](Reading& r, const std::string& v) {
         r.Args.Settings.Order = ParseCount("--order", v, 1);
@@ -473,7 +474,7 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     if (args.Settings.Order == 2 && !labelmesher::io::HoldsQuadraticCells(*format))
     {
-      throw UsageError("output '" + output + "': quadratic tetrahedra can be written as .vtu, .vtk, .msh, .inp or "
+      throw UsageError("output '" + output + "': quadratic cells can be written as .vtu, .vtk, .msh, .inp or "
                        ".mesh only");
     }
     if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=

@@ -60,7 +60,9 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   vtkUnstructuredGrid* curved = mesher->GetCurvedOutput();
   // A curving whose untangling failed is an error that still outputs the marked mesh: kept with
   // the error, for the front end to show or write.
-  const bool markedCurves = settings.Curve && curved->GetNumberOfCells() > 0 && mesh->GetNumberOfCells() > 0;
+  // (A 2D image's Order 2 is a curving too, into quadratic triangles.)
+  const bool curving = settings.Curve || (settings.Order == 2 && IsTwoDimensional(image));
+  const bool markedCurves = curving && curved->GetNumberOfCells() > 0 && mesh->GetNumberOfCells() > 0;
   if (!messages.Error.empty() && !markedCurves)
   {
     throw MeshingError(messages.Error);
@@ -77,7 +79,7 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   }
   out.Mesh = CopyOf(mesh);
   out.Interfaces = CopyOf(mesher->GetInterfacesOutput());
-  if (settings.Curve)
+  if (curving)
   {
     out.Curved = CopyOf(curved);
     out.CurveError = messages.Error;

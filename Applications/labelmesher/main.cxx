@@ -124,11 +124,6 @@ int Run(const Arguments& args)
       "' is 3D");
   }
   const bool quadratic = args.Settings.Order == 2;
-  if (quadratic && IsTwoDimensional(image))
-  {
-    throw RunError("'--order 2' makes quadratic tetrahedra of a 3D image; '" + args.Input +
-      "' is 2D (curve it into cubic triangles with 'labelmesher curve')");
-  }
   for (const std::string& output : args.Outputs)
   {
     if (IsTwoDimensional(image) && labelmesher::io::FormatOfPath(output) == labelmesher::io::MeshFormat::Stl)

@@ -66,6 +66,8 @@ const char* ElementType(const ExportMesh& mesh)
   {
     return mesh.Order == 2 ? "C3D10" : "C3D4"; // C3D10's node order is VTK's
   }
+  if (mesh.Order == 2)
+    return mesh.FlatAxis >= 0 ? "CPS6" : "STRI65"; // VTK's node order
   return mesh.FlatAxis >= 0 ? "CPS3" : "S3";
 }
 
@@ -111,7 +113,7 @@ void WriteAbaqus(const ExportMesh& mesh, std::ostream& out)
       std::copy_n(mesh.Cells.begin() + static_cast<std::ptrdiff_t>(c * nodes), nodes, cell.begin());
       if (mesh.Dimension == 2 && mesh.FlatAxis >= 0 && PlanarArea(mesh, cell.data()) < 0.0)
       {
-        std::swap(cell[1], cell[2]); // CPS3 wants counter-clockwise nodes
+        FlipTriangle(mesh, cell.data()); // CPS3 and CPS6 want counter-clockwise nodes
       }
       text.Int(element++);
       for (std::size_t k = 0; k < nodes; ++k)

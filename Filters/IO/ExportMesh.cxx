@@ -145,6 +145,59 @@ void QuadraticInterfaceFaces(ExportMesh& out)
   GroupFacesByPair(pairs, faces, out);
 }
 
+/// The interfaces of a quadratic triangle mesh as 3-node segments (ends, then the mid-node), taken
+/// from its cells: every edge between cells of two materials, and every edge of one cell alone
+/// (against the background or the image's box: material 0). Each runs as its edge in the cell of
+/// the smaller material (counter-clockwise in a flat mesh: that material on its left), in order of
+/// first use.
+void QuadraticInterfaceSegments(ExportMesh& out)
+{
+  struct Use
+  {
+    std::array<std::int64_t, 2> Key;
+    std::size_t Cell;
+    int Edge; ///< from corner Edge to corner (Edge + 1) % 3, mid-node at slot 3 + Edge
+  };
+  std::vector<Use> uses;
+  uses.reserve(out.NumberOfCells() * 3);
+  for (std::size_t c = 0; c < out.NumberOfCells(); ++c)
+    for (int e = 0; e < 3; ++e)
+    {
+      const std::int64_t a = out.Cells[c * 6 + static_cast<std::size_t>(e)];
+      const std::int64_t b = out.Cells[c * 6 + static_cast<std::size_t>((e + 1) % 3)];
+      uses.push_back({ { std::min(a, b), std::max(a, b) }, c, e });
+    }
+  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
+    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+  });
+  std::vector<std::pair<std::size_t, std::int32_t>> found; // (cell * 3 + edge, other material)
+  for (std::size_t u = 0; u < uses.size();)
+  {
+    std::size_t next = u + 1;
+    while (next < uses.size() && uses[next].Key == uses[u].Key)
+      ++next;
+    const std::int32_t first = out.CellMaterial[uses[u].Cell];
+    const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Cell] : 0;
+    if (first != second)
+      found.emplace_back(uses[u].Cell * 3 + static_cast<std::size_t>(uses[u].Edge), second);
+    u = next;
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<ExportMesh::Pair> pairs;
+  std::vector<std::int64_t> segments;
+  for (const auto& [slot, other] : found)
+  {
+    const std::size_t c = slot / 3;
+    const auto e = slot % 3;
+    const std::int32_t a = out.CellMaterial[c];
+    pairs.push_back({ std::min(a, other), std::max(a, other) });
+    segments.push_back(out.Cells[c * 6 + e]);
+    segments.push_back(out.Cells[c * 6 + (e + 1) % 3]);
+    segments.push_back(out.Cells[c * 6 + 3 + e]);
+  }
+  GroupFacesByPair(pairs, segments, out);
+}
+
 /// The cubic Bezier triangles' control points (VTK order: corners, two per edge, the centre) moved
 /// to the Lagrange nodes of the same cubic map, at the barycentric points (i, j, k) / 3. A point
 /// on an edge depends on that edge's four control points alone, so cells sharing the edge give it
@@ -202,13 +255,16 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
   }
   int cellType = nCells > 0 ? mesh->GetCellType(0) : VTK_TETRA;
   if (cellType != VTK_TETRA && cellType != VTK_TRIANGLE && cellType != VTK_BEZIER_TRIANGLE &&
-    cellType != VTK_QUADRATIC_TETRA)
+    cellType != VTK_QUADRATIC_TETRA && cellType != VTK_QUADRATIC_TRIANGLE)
   {
-    throw WriteError("only linear tetrahedra and triangles, quadratic tetrahedra and cubic Bezier triangles can "
-                     "be written");
+    throw WriteError("only linear tetrahedra and triangles, quadratic tetrahedra and triangles and cubic Bezier "
+                     "triangles can be written");
   }
   out.Dimension = cellType == VTK_TETRA || cellType == VTK_QUADRATIC_TETRA ? 3 : 2;
-  out.Order = cellType == VTK_BEZIER_TRIANGLE ? 3 : cellType == VTK_QUADRATIC_TETRA ? 2 : 1;
+  if (cellType == VTK_BEZIER_TRIANGLE)
+    out.Order = 3;
+  else if (cellType == VTK_QUADRATIC_TETRA || cellType == VTK_QUADRATIC_TRIANGLE)
+    out.Order = 2;
   const int nodes = out.NodesPerCell();
 
   out.Points.resize(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
@@ -289,9 +345,13 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
     }
     GroupFacesByPair(pairs, faces, out);
   }
-  else if (out.Order == 2)
+  else if (out.Order == 2 && out.Dimension == 3)
   {
     QuadraticInterfaceFaces(out);
+  }
+  else if (out.Order == 2)
+  {
+    QuadraticInterfaceSegments(out);
   }
 
   if (out.Dimension == 2 && !out.Points.empty())
@@ -329,6 +389,13 @@ double PlanarArea(const ExportMesh& mesh, const std::int64_t* cell)
   const auto& b = mesh.Points[static_cast<std::size_t>(cell[1])];
   const auto& c = mesh.Points[static_cast<std::size_t>(cell[2])];
   return (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
+}
+
+void FlipTriangle(const ExportMesh& mesh, std::int64_t* cell)
+{
+  std::swap(cell[1], cell[2]);
+  if (mesh.Order == 2)
+    std::swap(cell[3], cell[5]); // edge 0-1 becomes 0-2 (was 2-0); edge 1-2 stays its own
 }
 
 } // namespace io

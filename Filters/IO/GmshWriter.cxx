@@ -15,7 +15,7 @@ namespace io
 namespace
 {
 
-constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshQuadraticTriangle = 9,
+constexpr int GmshLine = 1, GmshTriangle = 2, GmshTetrahedron = 4, GmshQuadraticLine = 8, GmshQuadraticTriangle = 9,
               GmshQuadraticTetrahedron = 11, GmshCubicTriangle = 21;
 
 int CellType(const ExportMesh& mesh)
@@ -23,7 +23,7 @@ int CellType(const ExportMesh& mesh)
   if (mesh.Order == 3)
     return GmshCubicTriangle; // 10 nodes in VTK's order
   if (mesh.Order == 2)
-    return GmshQuadraticTetrahedron;
+    return mesh.Dimension == 3 ? GmshQuadraticTetrahedron : GmshQuadraticTriangle; // a triangle's 6 in VTK's
   return mesh.Dimension == 3 ? GmshTetrahedron : GmshTriangle;
 }
 
@@ -32,12 +32,12 @@ int CellType(const ExportMesh& mesh)
 const int* NodeOrder(const ExportMesh& mesh)
 {
   static constexpr int kTetra10[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 9, 8 };
-  return mesh.Order == 2 ? kTetra10 : nullptr;
+  return mesh.Order == 2 && mesh.Dimension == 3 ? kTetra10 : nullptr;
 }
 int FaceType(const ExportMesh& mesh)
 {
-  if (mesh.Order == 2)
-    return GmshQuadraticTriangle; // 6 nodes in VTK's order
+  if (mesh.Order == 2) // 6 nodes in VTK's order; a segment's ends, then its mid-node
+    return mesh.Dimension == 3 ? GmshQuadraticTriangle : GmshQuadraticLine;
   return mesh.Dimension == 3 ? GmshTriangle : GmshLine;
 }
 

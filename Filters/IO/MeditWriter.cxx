@@ -62,7 +62,8 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
   // keyword) is VTK's: corners, then the mid-nodes of edges 01, 12, 20, 03, 13, 23 (libMeshb's
   // example test_libmeshb_HO.c, Gmsh's MElement::writeMESH and its reader, which swap its own
   // last two edges to it; CLI.export_quadratic reads our file back through Gmsh).
-  const char* keyword = mesh.Order == 2 ? "TetrahedraP2\n" : mesh.Dimension == 3 ? "Tetrahedra\n" : "Triangles\n";
+  const char* keyword = mesh.Dimension == 3 ? (mesh.Order == 2 ? "TetrahedraP2\n" : "Tetrahedra\n")
+                                            : (mesh.Order == 2 ? "TrianglesP2\n" : "Triangles\n");
   text.Text(keyword).Int(static_cast<std::int64_t>(mesh.NumberOfCells())).Char('\n');
   for (std::size_t c = 0; c < mesh.NumberOfCells(); ++c)
   {
@@ -70,7 +71,7 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
     std::copy_n(mesh.Cells.begin() + static_cast<std::ptrdiff_t>(c * nodes), nodes, cell.begin());
     if (planar && PlanarArea(mesh, cell.data()) < 0.0)
     {
-      std::swap(cell[1], cell[2]);
+      FlipTriangle(mesh, cell.data());
     }
     for (std::size_t k = 0; k < nodes; ++k)
     {
@@ -82,8 +83,11 @@ void WriteMedit(const ExportMesh& mesh, std::ostream& out)
   const auto faceNodes = static_cast<std::size_t>(mesh.NodesPerFace());
   if (mesh.NumberOfFaces() > 0)
   {
-    // TrianglesP2: corners, then the mid-nodes of edges 12, 23, 31 (VTK's order, as Gmsh reads it).
-    text.Text(mesh.Order == 2 ? "TrianglesP2\n" : mesh.Dimension == 3 ? "Triangles\n" : "Edges\n").Int(static_cast<std::int64_t>(mesh.NumberOfFaces())).Char('\n');
+    // TrianglesP2: corners, then the mid-nodes of edges 12, 23, 31 (VTK's order, as Gmsh reads it);
+    // EdgesP2: ends, then the mid-node.
+    const char* faces = mesh.Dimension == 3 ? (mesh.Order == 2 ? "TrianglesP2\n" : "Triangles\n")
+                                            : (mesh.Order == 2 ? "EdgesP2\n" : "Edges\n");
+    text.Text(faces).Int(static_cast<std::int64_t>(mesh.NumberOfFaces())).Char('\n');
     for (std::size_t i = 0; i < mesh.Interfaces.size(); ++i)
     {
       const std::int64_t reference = MeditInterfaceReference(mesh, i);

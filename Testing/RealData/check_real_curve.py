@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Curve one real 2D label image with `labelmesher curve` (C1 and C2, h = 2) and
-assert what the curver promises, from its JSON report and from the written mesh:
+"""Curve one real 2D label image with `labelmesher curve` (C1 and C2, h = 2), and make it
+quadratic triangles with `labelmesher mesh --order 2`, and assert what the curver promises,
+from its JSON report and from the written mesh:
 
 - every cell proven valid (report), no cell marked invalid (cell data);
 - det J of every cell, evaluated here from the written control points with
   numpy (VTK's Bézier triangle order, finite differences; independent of the
   C++ proof), has one sign at every sample;
-- cubic Bézier triangles only, Material labels those of the linear mesh;
+- cubic Bézier triangles only (quadratic triangles with --order 2, whose sampled
+  min det J / max det J is also at least the bound of 0.1);
 - the scaled-Jacobian histogram accounts for every cell;
 - decimated by default; both distance bounds kept on the curves (the report's
   measured figures, which may exceed the true distances by its resolution),
@@ -26,7 +28,7 @@ import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, VTK_QUADRATIC_TRIANGLE
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -46,6 +48,13 @@ def evaluate(points, r, s):
     return result
 
 
+def evaluate_quadratic(points, r, s):
+    """6-node (Lagrange) triangles (n, 6, 2), corners then the mid-nodes of edges 0-1, 1-2, 2-0."""
+    u = 1.0 - r - s
+    weights = (u * (2 * u - 1), r * (2 * r - 1), s * (2 * s - 1), 4 * u * r, 4 * r * s, 4 * s * u)
+    return sum(w * points[:, p, :] for p, w in enumerate(weights))
+
+
 def sampled_jacobians(points, n=8, h=1e-6):
     values = []
     for a in range(n + 1):
@@ -53,18 +62,21 @@ def sampled_jacobians(points, n=8, h=1e-6):
             # Stay h inside the triangle so that central differences are defined.
             r = min(max(a / n, 2 * h), 1 - 4 * h)
             s = min(max(b / n, 2 * h), 1 - r - 2 * h)
-            dr = (evaluate(points, r + h, s) - evaluate(points, r - h, s)) / (2 * h)
-            ds = (evaluate(points, r, s + h) - evaluate(points, r, s - h)) / (2 * h)
+            at = evaluate_quadratic if points.shape[1] == 6 else evaluate
+            dr = (at(points, r + h, s) - at(points, r - h, s)) / (2 * h)
+            ds = (at(points, r, s + h) - at(points, r, s - h)) / (2 * h)
             values.append(dr[:, 0] * ds[:, 1] - dr[:, 1] * ds[:, 0])
     return np.array(values)
 
 
 def check(labelmesher, image, workdir, smoothness):
+    """smoothness "1" or "2": `curve` with C1 or C2; "order2": `mesh --order 2` (C1 fitted)."""
+    quadratic = smoothness == "order2"
     name = os.path.splitext(os.path.basename(image))[0] + "_c" + smoothness
     mesh = os.path.join(workdir, name + ".vtu")
     report_path = os.path.join(workdir, name + ".json")
-    run = subprocess.run([labelmesher, "curve", image, "-o", mesh, "--report", report_path,
-                          "--smoothness", smoothness, "--hausdorff", "2"],
+    command = ["mesh", image, "--order", "2"] if quadratic else ["curve", image, "--smoothness", smoothness]
+    run = subprocess.run([labelmesher] + command + ["-o", mesh, "--report", report_path, "--hausdorff", "2"],
                          capture_output=True, text=True)
     print(run.stdout)
     failures = []
@@ -93,8 +105,8 @@ def check(labelmesher, image, workdir, smoothness):
         failures.append("curves: %d crossings, topology matches %s" % (curved["interface_crossings"],
                                                                      curved["topology_matches"]))
     accuracy = report["accuracy"]
-    if smoothness == "1" and not 5 * accuracy["misclassified_curved"] <= 4 * accuracy["misclassified_linear"]:
-        failures.append("C1 curves not a fifth more accurate than linear: %d -> %d" %
+    if smoothness != "2" and not 5 * accuracy["misclassified_curved"] <= 4 * accuracy["misclassified_linear"]:
+        failures.append("fitted curves not a fifth more accurate than linear: %d -> %d" %
                         (accuracy["misclassified_linear"], accuracy["misclassified_curved"]))
 
     reader = vtkXMLUnstructuredGridReader()
@@ -104,19 +116,24 @@ def check(labelmesher, image, workdir, smoothness):
     os.remove(mesh)
     if grid.GetNumberOfCells() != cells:
         failures.append("mesh has %d cells, report %d" % (grid.GetNumberOfCells(), cells))
-    if not np.all(vtk_to_numpy(grid.GetCellTypesArray()) == VTK_BEZIER_TRIANGLE):
-        failures.append("cells other than VTK_BEZIER_TRIANGLE")
+    cell_type, nodes = (VTK_QUADRATIC_TRIANGLE, 6) if quadratic else (VTK_BEZIER_TRIANGLE, 10)
+    if not np.all(vtk_to_numpy(grid.GetCellTypesArray()) == cell_type):
+        failures.append("cells other than type %d" % cell_type)
+        return failures
     if not np.all(vtk_to_numpy(grid.GetCellData().GetArray("Valid")) == 1):
         failures.append("cells marked Valid = 0")
-    connectivity = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    connectivity = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, nodes)
     points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2][connectivity]
     jacobians = sampled_jacobians(points)
     lowest, highest = jacobians.min(), jacobians.max()
     if not (lowest > 0 or highest < 0):
         failures.append("sampled det J changes sign: [%g, %g]" % (lowest, highest))
-    print("C%s: %d cells, sampled det J in [%g, %g], misclassified pixels %d -> %d, curves h(I,M) %.4f "
+    ratio = float(np.min(np.abs(jacobians).min(axis=0) / np.abs(jacobians).max(axis=0)))
+    if quadratic and not ratio >= 0.1:
+        failures.append("sampled min det J / max det J %g below 0.1" % ratio)
+    print("%s: %d cells, sampled det J in [%g, %g] (ratio %.3f), misclassified pixels %d -> %d, curves h(I,M) %.4f "
           "h(M,I) %.4f (linear %.4f %.4f), %d of %d pieces shortened"
-          % (smoothness, cells, lowest, highest, accuracy["misclassified_linear"], accuracy["misclassified_curved"],
+          % ("order 2" if quadratic else "C" + smoothness, cells, lowest, highest, ratio, accuracy["misclassified_linear"], accuracy["misclassified_curved"],
              curved["measured_image_to_mesh"], curved["measured_mesh_to_image"],
              report["linear_mesh"]["measured_image_to_mesh"], report["linear_mesh"]["measured_mesh_to_image"],
              curved["shortened_pieces"], curved["curved_edges"]))
@@ -157,7 +174,7 @@ def main():
     labelmesher, image, workdir = sys.argv[1:4]
     os.makedirs(workdir, exist_ok=True)
     failures = []
-    for smoothness in ("1", "2"):
+    for smoothness in ("1", "2", "order2"):
         failures += ["C%s: %s" % (smoothness, f) for f in check(labelmesher, image, workdir, smoothness)]
     if "--check-failure" in sys.argv[4:]:
         failures += check_loud_failure(labelmesher, image, workdir)

@@ -124,7 +124,7 @@ inline constexpr char ClaimedPixelsLinear[] = "ClaimedPixelsLinear";
 inline constexpr char ClaimedPixelsCurved[] = "ClaimedPixelsCurved";
 
 // ---- field data of the quadratic 3D mesh (vtkLabelMesher with Order 2) ----
-inline constexpr char Order[] = "Order"; ///< 2: quadratic tetrahedra
+inline constexpr char Order[] = "Order"; ///< 2: quadratic tetrahedra (triangles: vtkBezierCurver's, 2 or 3)
 inline constexpr char FittedEdges[] = "FittedEdges";           ///< interface edges given a fitted mid-node
 inline constexpr char PulledBackEdges[] = "PulledBackEdges";   ///< of those, pulled back at least once
 inline constexpr char CellsFailedScaledJacobian[] = "CellsFailedScaledJacobian"; ///< in some round, before pulling back

@@ -241,10 +241,11 @@ public:
    * (VTK_QUADRATIC_TRIANGLE, 6 points: corners, then the mid-nodes of edges
    * 0-1, 1-2, 2-0, on the curves at their middle), as finite-element solvers
    * take them (Abaqus CPS6, Gmsh's 6-node triangle). Every curve is then a
-   * quadratic (one control point per edge, the one nearest to the fitted
-   * cubic), shortened towards its chord's midpoint, and the cells carry the
-   * same proofs: they are certified in their exact cubic form (degree
-   * elevation). Field data `Order`.
+   * quadratic (one control point per edge: with the image, C1, fitted to it
+   * on its own; otherwise the one nearest to the smoothed cubic), shortened
+   * towards its chord's midpoint, and the cells carry the same proofs: they
+   * are certified in their exact cubic form (degree elevation). Field data
+   * `Order`.
    */
   vtkSetClampMacro(Order, int, 2, 3);
   vtkGetMacro(Order, int);

@@ -155,6 +155,18 @@ const ExportMesh& MeshFileWriter::Flat()
   return *this->Flattened;
 }
 
+namespace
+{
+/// The surface formats hold straight triangles and segments: a curved mesh's interfaces (their
+/// mid-nodes, control points) would be written as other faces.
+void RefuseCurved(const ExportMesh& mesh, const std::string& path)
+{
+  if (mesh.Order != 1)
+    throw WriteError("cannot write '" + path + "': .stl and .obj hold straight faces; write a curved or quadratic "
+                     "mesh as .vtu, .vtk or .msh");
+}
+} // namespace
+
 std::vector<std::string> MeshFileWriter::Write(const std::string& path)
 {
   const std::optional<MeshFormat> format = FormatOfPath(path);
@@ -203,12 +215,14 @@ std::vector<std::string> MeshFileWriter::Write(const std::string& path)
     case MeshFormat::Obj:
     {
       const ExportMesh& m = flat();
+      RefuseCurved(m, path);
       WriteWhole(path, [&](std::ostream& out) { WriteObj(m, out); });
       break;
     }
     case MeshFormat::Stl:
     {
       const ExportMesh& m = flat();
+      RefuseCurved(m, path);
       if (m.Dimension != 3)
       {
         throw WriteError("cannot write '" + path + "': STL holds triangles, a 2D mesh's interfaces are segments (use .obj or .vtp)");

@@ -57,9 +57,10 @@ std::string KnownExtensions();
 /// True for the formats that hold curved (cubic) cells: .vtu, .vtk (Bezier cells) and .msh
 /// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);
-/// Formats that hold quadratic tetrahedra (VTK_QUADRATIC_TETRA): .vtu, .vtk, .msh (10-node),
-/// .inp (C3D10), .mesh (Medit's TetrahedraP2, in VTK's node order; Debian's meshio cannot read
-/// it, Gmsh can: CLI.export_quadratic).
+/// Formats that hold quadratic cells (VTK_QUADRATIC_TETRA, VTK_QUADRATIC_TRIANGLE): .vtu, .vtk,
+/// .msh (10-node tetrahedra, 6-node triangles), .inp (C3D10, CPS6), .mesh (Medit's TetrahedraP2
+/// and TrianglesP2, in VTK's node order; Debian's meshio cannot read them, Gmsh reads the 3D
+/// ones: CLI.export_quadratic, CLI.export_quadratic_2d).
 bool HoldsQuadraticCells(MeshFormat format);
 
 struct WriteOptions

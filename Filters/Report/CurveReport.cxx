@@ -173,7 +173,7 @@ void PrintCurveSummary(const CurveReport& r, std::ostream& out)
   PrintSummary(r.Linear, out);
   out << "Curved mesh: " << r.Cells << (r.Order == 2 ? " quadratic triangles, " : " cubic Bezier triangles, ")
       << r.ControlPoints << (r.Order == 2 ? " nodes, " : " control points, C" + std::to_string(r.Smoothness))
-      << (r.Order == 2 ? "boundaries fitted as quadratics" : " boundaries") << " (" << r.InterfaceChains
+      << (r.Order == 2 ? "quadratic boundaries" : " boundaries") << " (" << r.InterfaceChains
       << " chains, " << r.ClosedInterfaceChains << " closed, " << r.CurvedEdges
       << " curved edges, " << r.SplitEars << " ears split, " << r.EarCorners << " corners at ears)\n";
   out << "Validity: " << (r.Valid() ? "every cell proven valid" : "INVALID CELLS REMAIN") << " ("

@@ -175,7 +175,8 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     failures = []
     for smoothness in ("1", "2", "order2"):
-        failures += ["C%s: %s" % (smoothness, f) for f in check(labelmesher, image, workdir, smoothness)]
+        label = "order 2" if smoothness == "order2" else "C" + smoothness
+        failures += ["%s: %s" % (label, f) for f in check(labelmesher, image, workdir, smoothness)]
     if "--check-failure" in sys.argv[4:]:
         failures += check_loud_failure(labelmesher, image, workdir)
     if failures:

@@ -268,8 +268,9 @@ std::vector<std::array<Point2, 2>> FitQuadraticSegments(const std::vector<Point2
       t.push_back(sample->Parameter);
     for (int round = 0; !t.empty() && round <= options.ParameterCorrections; ++round)
     {
-      // Normal equations of the one unknown q (both coordinates alike), plus the pull to the prior.
-      const double pull = options.Regularisation * c * c;
+      // Normal equations of the one unknown q (both coordinates alike), plus the pull to the prior:
+      // a squared length like the samples' residuals (as FitChain's pull per control point moved).
+      const double pull = options.Regularisation;
       double weight = pull;
       Point2 sum{ pull * prior[0], pull * prior[1] };
       for (std::size_t k = 0; k < t.size(); ++k)
@@ -286,6 +287,12 @@ std::vector<std::array<Point2, 2>> FitQuadraticSegments(const std::vector<Point2
       for (std::size_t k = 0; k < t.size(); ++k)
         t[k] = Reproject({ a, inner[0], inner[1], b }, bySegment[s][k]->Point, t[k]);
     }
+    // As FitChain shortens handles beyond half a chord (a cubic may loop), q is pulled towards
+    // the chord's midpoint until both elevated handles, 2/3 |q - a| and 2/3 |q - b|, are at most
+    // that: the curve then bulges by at most 3/8 of its chord.
+    const Point2 middle{ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]) };
+    for (int k = 0; k < 64 && std::max(Distance(q, a), Distance(q, b)) > 0.75 * c; ++k)
+      q = { middle[0] + 0.9 * (q[0] - middle[0]), middle[1] + 0.9 * (q[1] - middle[1]) };
     out[s] = ElevateQuadratic(a, q, b);
   }
   return out;

@@ -47,9 +47,11 @@ std::vector<std::array<Point2, 2>> FitChain(const std::vector<Point2>& vertices,
 /// Quadratic segments (CurvingParameters::Order 2), as cubic inner control points (degree
 /// elevation, QuadraticForm.h): each segment's one control point q fitted on its own to its
 /// samples, least squares on B(t) = (1 - t)^2 a + 2 t (1 - t) q + t^2 b with the same parameter
-/// corrections and a pull (Regularisation, per squared chord) towards the quadratic nearest to
-/// `initial`'s cubic segment (the C1 fit of FitChain): one control point cannot keep C1 at both
-/// ends, so segments meet with G0, and each follows its own samples.
+/// corrections and a pull (Regularisation, on the squared distance q moves: mesh units like the
+/// samples' residuals, so the fit does not depend on the spacing) towards the quadratic nearest
+/// to `initial`'s cubic segment (the C1 fit of FitChain), and q moved towards the chord's
+/// midpoint until both elevated handles are at most half the chord: one control point cannot
+/// keep C1 at both ends, so segments meet with G0, and each follows its own samples.
 std::vector<std::array<Point2, 2>> FitQuadraticSegments(const std::vector<Point2>& vertices, bool closed,
   const std::vector<BoundarySample>& samples, const std::vector<std::array<Point2, 2>>& initial,
   const FitOptions& options);

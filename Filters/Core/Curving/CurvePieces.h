@@ -15,7 +15,8 @@
  * derivatives do not vanish, so that its cells stay provably valid).
  * A quadratic piece (CurvingParameters::Order 2, QuadraticForm.h) scales its one
  * control point towards the chord's midpoint instead, m + s (q − m): the piece
- * stays a quadratic at every scale, and at s = 0 it is the same straight edge.
+ * stays a quadratic at every scale, and at s = 0 it is the same straight edge;
+ * quadratic pieces meet with G0 only, so none of the continuity above applies.
  */
 
 #include "Curving/CubicTriangle.h"

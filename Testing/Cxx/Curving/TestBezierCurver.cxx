@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -329,6 +330,44 @@ TEST(BezierCurver, EarsAreSplitAndCurvedValid)
   const CurvingResult result = CurveMesh(mesh, parameters);
   EXPECT_EQ(result.SplitEars, 1u);
   EXPECT_TRUE(result.Valid);
+}
+
+/// Order 2 on the paths the property tests do not take (they fit to an image with a corner
+/// bound): ears split (no corner bound), C2 and C1 curves without an image, no scaled Jacobian
+/// bound. Every cell stays exactly quadratic and valid.
+TEST(BezierCurver, OrderTwoIsQuadraticOnEveryPath)
+{
+  for (const Smoothness smoothness : { Smoothness::C1, Smoothness::C2 })
+  {
+    CurvingParameters parameters;
+    parameters.Order = 2;
+    parameters.Smoothing.Continuity = smoothness;
+    const CurvingResult result = CurveMesh(SquareWithAnEar(), parameters);
+    EXPECT_EQ(result.SplitEars, 1u);
+    EXPECT_TRUE(result.Valid);
+    ASSERT_GT(result.NumberOfCurvedEdges, 0u);
+    double bent = 0.0;
+    for (std::size_t c = 0; c < result.Mesh.Cells.size(); ++c)
+    {
+      const CubicTriangle cell = result.Mesh.Cell(c);
+      EXPECT_LT(testing::QuadraticNodesMismatch(cell), 1e-12) << "cell " << c;
+      EXPECT_GT(testing::SampledMinimumJacobian(cell), 0.0) << "cell " << c;
+      // How far each edge's middle lies from its chord's.
+      const std::array<Point2, 3> middles{ EvaluateCubicTriangle(cell, 0.5, 0.5, 0.0),
+        EvaluateCubicTriangle(cell, 0.0, 0.5, 0.5), EvaluateCubicTriangle(cell, 0.5, 0.0, 0.5) };
+      for (int e = 0; e < 3; ++e)
+      {
+        const Point2& a = cell.ControlPoints[static_cast<std::size_t>(e)];
+        const Point2& b = cell.ControlPoints[static_cast<std::size_t>((e + 1) % 3)];
+        bent = std::max(bent, std::hypot(middles[static_cast<std::size_t>(e)][0] - 0.5 * (a[0] + b[0]),
+                                middles[static_cast<std::size_t>(e)][1] - 0.5 * (a[1] + b[1])));
+      }
+    }
+    EXPECT_GT(bent, 1e-3) << "no edge was curved";
+  }
+  CurvingParameters parameters;
+  parameters.Order = 4;
+  EXPECT_THROW(CurveMesh(SquareWithAnEar(), parameters), std::invalid_argument);
 }
 
 TEST(BezierCurver, WithACornerBoundTheChainTurnsAtAnEarAndCornersKeepIt)

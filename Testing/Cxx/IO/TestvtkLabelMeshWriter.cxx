@@ -190,6 +190,28 @@ TEST_F(WriterTest, AnEmptyMeshFromAFailedFilterWritesNoFile)
   EXPECT_EQ(errors.Messages.size(), 2u);
 }
 
+/// Surface formats hold straight faces: a quadratic mesh (port 2 of a 2D Order 2 run) with an
+/// interface surface is refused in one line rather than written with its mid-nodes as corners.
+TEST_F(WriterTest, SurfaceFormatsRefuseQuadraticCells)
+{
+  vtkNew<vtkLabelMesher> quadratic;
+  quadratic->SetInputData(labelmesher::testing::MakeVtkImage2D(labelmesher::testing::MakeDiscSliceXZ(24, 8.0), 24, 24));
+  quadratic->SetOrder(2);
+  vtkNew<vtkLabelMeshWriter> writer;
+  writer->SetInputConnection(quadratic->GetOutputPort(2));
+  writer->SetInterfacesConnection(quadratic->GetOutputPort(1));
+  MessageRecorder errors(writer, vtkCommand::ErrorEvent);
+  for (const char* name : { "q.obj", "q.stl" })
+  {
+    writer->SetFileName(this->Path(name).c_str());
+    EXPECT_EQ(writer->Write(), 0) << name;
+    EXPECT_NE(std::string(writer->GetErrorText()).find("straight faces"), std::string::npos) << writer->GetErrorText();
+    EXPECT_FALSE(std::filesystem::exists(this->Path(name))) << name;
+  }
+  writer->SetFileName(this->Path("q.msh").c_str());
+  EXPECT_EQ(writer->Write(), 1) << writer->GetErrorText();
+}
+
 TEST_F(WriterTest, GmshVersionChoice)
 {
   vtkNew<vtkLabelMeshWriter> writer;

@@ -146,6 +146,16 @@ ParameterPanel::ParameterPanel(QWidget* parent)
                                      "bound of its Jacobian), both distance bounds, no crossing."));
   form->addRow(tr("Smoothness"), this->SmoothnessBox);
 
+  this->SliceOrderBox = new QComboBox(this);
+  this->SliceOrderBox->setObjectName(QStringLiteral("sliceOrder"));
+  this->SliceOrderBox->addItems({ tr("cubic Bezier triangles"), tr("quadratic triangles (6 nodes)") });
+  this->SliceOrderBox->setToolTip(tr("2D curved meshes: the order of the curved cells. Quadratic "
+                                     "triangles (as solvers take them: Abaqus CPS6, Gmsh's 6-node "
+                                     "triangle; saved also as .inp or .mesh) have one control point per "
+                                     "edge, fitted to the image, and the same guarantees; they need "
+                                     "decimation."));
+  form->addRow(tr("Curved cells"), this->SliceOrderBox);
+
   this->TensionBox = new QDoubleSpinBox(this);
   this->TensionBox->setObjectName(QStringLiteral("tension"));
   this->TensionBox->setDecimals(3);
@@ -193,6 +203,10 @@ ParameterPanel::ParameterPanel(QWidget* parent)
     emit smoothnessChanged(index + 1);
     emit parametersChanged();
   });
+  connect(this->SliceOrderBox, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int index) {
+    emit sliceOrderChanged(index == 0 ? 3 : 2);
+    emit parametersChanged();
+  });
   connect(this->TensionBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double t) {
     emit tensionChanged(t);
     emit parametersChanged();
@@ -217,6 +231,7 @@ void ParameterPanel::enableCurverControls()
   // Smoothness and tension shape the 2D curver's cubic curves; quadratic tetrahedra have neither.
   this->SmoothnessBox->setEnabled(this->Dimension == 2 && this->curve());
   this->TensionBox->setEnabled(this->Dimension == 2 && this->curve());
+  this->SliceOrderBox->setEnabled(this->Dimension == 2 && this->CurveBox->isChecked());
 }
 
 double ParameterPanel::displayScale() const
@@ -318,7 +333,19 @@ void ParameterPanel::setMinimumAngle(double degrees)
 
 bool ParameterPanel::curve() const
 {
-  return this->CurveBox->isChecked() && (this->Dimension == 2 || this->decimate());
+  // Quadratic cells are made of the decimated mesh; a slice's cubic ones of either.
+  return this->CurveBox->isChecked() && ((this->Dimension == 2 && this->sliceOrder() == 3) || this->decimate());
+}
+
+int ParameterPanel::sliceOrder() const
+{
+  return this->SliceOrderBox->currentIndex() == 0 ? 3 : 2;
+}
+
+void ParameterPanel::setSliceOrder(int order)
+{
+  if (order == 2 || order == 3)
+    this->SliceOrderBox->setCurrentIndex(order == 3 ? 0 : 1);
 }
 
 void ParameterPanel::setCurve(bool on)

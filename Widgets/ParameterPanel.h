@@ -7,7 +7,7 @@
  * A Qt5 panel for the parameters of vtkLabelMesher (mesher, decimator and
  * curver in one pipeline): the two distance bounds (shown in voxels of the smallest
  * spacing or in mm), the decimator's angle bound, whether to curve (2D images:
- * cubic Bezier triangles, with the curver's smoothness and tension; 3D images:
+ * cubic Bezier or quadratic triangles, with the curver's smoothness and tension; 3D images:
  * quadratic tetrahedra from the decimated mesh), and presets. Every value is a Q_PROPERTY with a change signal; the
  * distance properties are always in voxels (the filters' unit), whatever the
  * display unit. Each control's tooltip states the guarantee it sets.
@@ -39,6 +39,7 @@ class ParameterPanel : public QWidget
   Q_PROPERTY(double memoryLimit READ memoryLimit WRITE setMemoryLimit NOTIFY memoryLimitChanged)
   Q_PROPERTY(bool curve READ curve WRITE setCurve NOTIFY curveChanged)
   Q_PROPERTY(int smoothness READ smoothness WRITE setSmoothness NOTIFY smoothnessChanged)
+  Q_PROPERTY(int sliceOrder READ sliceOrder WRITE setSliceOrder NOTIFY sliceOrderChanged)
   Q_PROPERTY(double tension READ tension WRITE setTension NOTIFY tensionChanged)
   Q_PROPERTY(Preset preset READ preset WRITE setPreset NOTIFY presetChanged)
 
@@ -69,10 +70,13 @@ public:
   /// MiB the process may hold at most; a run estimated above it is refused before it starts. 0: the
   /// memory available.
   double memoryLimit() const;
-  /// Curve the mesh: a 2D image into cubic Bezier triangles (vtkBezierCurver), a 3D one into
-  /// quadratic tetrahedra (vtkLabelMesher's Order 2), which needs decimation (false without it).
+  /// Curve the mesh: a 2D image into cubic Bezier triangles (vtkBezierCurver) or quadratic
+  /// triangles (sliceOrder 2), a 3D one into quadratic tetrahedra (vtkLabelMesher's Order 2);
+  /// quadratic cells need decimation (false without it).
   bool curve() const;
   int smoothness() const;      ///< 1 (C1) or 2 (C2)
+  /// A 2D image's curved cells: 3, cubic Bezier triangles; 2, quadratic (6-node) triangles.
+  int sliceOrder() const;
   double tension() const;      ///< dimensionless, [0, 1]
   Preset preset() const { return this->CurrentPreset; }
   /// The largest angle bound allowed for the image dimension (degrees).
@@ -89,6 +93,7 @@ public slots:
   void setMemoryLimit(double mib);  ///< negative and non-finite values are refused
   void setCurve(bool on); ///< kept across images, and for a 3D image while decimation is off
   void setSmoothness(int continuity);
+  void setSliceOrder(int order); ///< 2 or 3; other values are refused
   void setTension(double tension);
   void setPreset(Preset preset);
 
@@ -102,6 +107,7 @@ signals:
   void memoryLimitChanged(double mib);
   void curveChanged(bool on);
   void smoothnessChanged(int continuity);
+  void sliceOrderChanged(int order);
   void tensionChanged(double tension);
   void presetChanged(Preset preset);
   /// Any value above changed.
@@ -133,6 +139,7 @@ private:
   QDoubleSpinBox* MemoryLimitBox = nullptr;
   QCheckBox* CurveBox = nullptr;
   QComboBox* SmoothnessBox = nullptr;
+  QComboBox* SliceOrderBox = nullptr;
   QDoubleSpinBox* TensionBox = nullptr;
 };
 

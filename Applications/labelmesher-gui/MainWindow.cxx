@@ -53,10 +53,10 @@ labelmesher_cli::MeshingSettings SettingsOf(const widgets::ParameterPanel& panel
   settings.MeshToImageDistance = panel.meshToImageDistance();
   settings.Decimate = panel.decimate();
   settings.MinimumAngle = panel.minimumAngle();
-  // Curving a 2D image makes cubic Bezier triangles, a 3D one quadratic tetrahedra.
+  // Curving a 2D image makes cubic Bezier triangles or quadratic ones, a 3D one quadratic tetrahedra.
   const bool flat = panel.imageDimension() == 2;
-  settings.Curve = panel.curve() && flat;
-  settings.Order = panel.curve() && !flat ? 2 : 1;
+  settings.Curve = panel.curve() && flat && panel.sliceOrder() == 3;
+  settings.Order = panel.curve() && !settings.Curve ? 2 : 1;
   settings.Smoothness = panel.smoothness();
   settings.Tension = panel.tension();
   settings.BlockCells = panel.blockCells();
@@ -295,11 +295,12 @@ void MainWindow::onFinished()
   this->showReport();
   this->Progress->setValue(kProgressSteps);
   const bool quadratic = this->Report && this->Report->Quadratic;
+  const bool quadraticTriangles = this->Curves && this->Curves->Order == 2;
   QString done = out.Curved
     ? tr("meshed and curved in %1 s: %2 %3")
         .arg(this->Job.seconds(), 0, 'f', 1)
         .arg(out.Curved->GetNumberOfCells())
-        .arg(quadratic ? tr("quadratic tetrahedra") : tr("curved cells"))
+        .arg(quadratic ? tr("quadratic tetrahedra") : quadraticTriangles ? tr("quadratic triangles") : tr("curved cells"))
     : tr("meshed in %1 s: %2 cells").arg(this->Job.seconds(), 0, 'f', 1).arg(out.Mesh->GetNumberOfCells());
   // A failed or unfaithful curving is shown (the marked mesh, for inspection) and said plainly.
   if (!out.CurveError.empty())
@@ -372,10 +373,10 @@ bool MainWindow::saveMesh(const QString& path)
     return false;
   }
   const std::optional<labelmesher::io::MeshFormat> format = labelmesher::io::FormatOfPath(path.toStdString());
-  const bool quadratic = this->Report->Quadratic.has_value();
+  const bool quadratic = this->Report->Quadratic.has_value() || (this->Curves && this->Curves->Order == 2);
   if (out.Curved && quadratic && format && !labelmesher::io::HoldsQuadraticCells(*format))
   {
-    this->fail(tr("cannot save '%1': quadratic tetrahedra can be saved as .vtu, .vtk, .msh, .inp or .mesh only").arg(path));
+    this->fail(tr("cannot save '%1': quadratic cells can be saved as .vtu, .vtk, .msh, .inp or .mesh only").arg(path));
     return false;
   }
   if (out.Curved && !quadratic && format && !labelmesher::io::HoldsCurvedCells(*format))

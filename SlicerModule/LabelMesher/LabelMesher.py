@@ -40,8 +40,9 @@ class LabelMesher(ScriptedLoadableModule):
             "segment kept. The mesh can also be curved to follow the segments: a volume into quadratic "
             "tetrahedra (with decimation), each cell's scaled Jacobian (min det J / max det J) certified at "
             "least 0.1 by the Bernstein coefficients of det J, both distance bounds certified on the curved "
-            "interfaces, every segment's topology kept; a single slice into cubic Bezier triangles, each "
-            "proven valid, whose curves keep both distance bounds. The report below the Apply button gives "
+            "interfaces, every segment's topology kept; a single slice into cubic Bezier triangles or "
+            "quadratic triangles (Slice cells), each proven valid, whose curves keep both distance bounds. "
+            "The report below the Apply button gives "
             "the measured values.")
         self.parent.acknowledgementText = (
             "Octree refinement and decimation after J. Xu, PhD dissertation, Old Dominion University, 2020.")
@@ -76,6 +77,7 @@ class LabelMesherParameterNode:
     curve: bool = _DEFAULTS.curve
     smoothness: Annotated[int, WithinRange(1, 2)] = _DEFAULTS.smoothness
     tension: Annotated[float, WithinRange(0.0, 1.0)] = _DEFAULTS.tension
+    sliceOrder: Annotated[int, WithinRange(2, 3)] = _DEFAULTS.slice_order
     blockCells: Annotated[int, WithinRange(0, 2147483647)] = _DEFAULTS.block_cells
     memoryLimit: Annotated[float, WithinRange(0.0, 1.0e7)] = _DEFAULTS.memory_limit
 
@@ -181,6 +183,7 @@ class LabelMesherWidget(ScriptedLoadableModuleWidget, VTKObservationMixin):
                                           mesh_to_image_distance=p.meshToImageDistance, decimate=p.decimate,
                                           minimum_angle=p.minimumAngle, include_background=p.includeBackground,
                                           curve=p.curve, smoothness=p.smoothness, tension=p.tension,
+                                          slice_order=p.sliceOrder,
                                           block_cells=p.blockCells, memory_limit=p.memoryLimit),
                         progress, lambda: self._cancelRequested)
                     self.ui.summaryText.plainText = result.summary
@@ -337,6 +340,12 @@ class LabelMesherTest(ScriptedLoadableModuleTest):
         self.assertEqual(model.GetMesh().GetCellType(0), vtk.VTK_BEZIER_TRIANGLE)
         self.assertTrue(curve["validity"]["valid"])
         self.assertTrue(curve["curved_mesh"]["within_bounds"])
+        quadratic = LabelMesherLogic().process(None, [], volume, model,
+                                               MeshingParameters(curve=True, slice_order=2)).report["curve"]
+        self.assertEqual(model.GetMesh().GetCellType(0), vtk.VTK_QUADRATIC_TRIANGLE)
+        self.assertEqual(quadratic["curved_mesh"]["order"], 2)
+        self.assertTrue(quadratic["validity"]["valid"])
+        self.assertTrue(quadratic["curved_mesh"]["within_bounds"])
         self.delayDisplay("LabelMesher curved slice test passed")
 
     def test_QuadraticVolume(self):

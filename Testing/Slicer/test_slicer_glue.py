@@ -108,7 +108,7 @@ class ApplyErrorTest(unittest.TestCase):
         widget._parameterNode = types.SimpleNamespace(
             inputSegmentation=None, inputLabelmap=None, outputModel=None, imageToMeshDistance=2.0,
             meshToImageDistance=2.0, decimate=True, minimumAngle=15.0, includeBackground=False, curve=False,
-            smoothness=1, tension=1.0 / 3.0, blockCells=1000000, memoryLimit=0.0)
+            smoothness=1, tension=1.0 / 3.0, sliceOrder=3, blockCells=1000000, memoryLimit=0.0)
 
         def process(*args, **kwargs):
             raise error

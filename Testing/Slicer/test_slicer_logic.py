@@ -11,7 +11,7 @@ import unittest
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, VTK_QUADRATIC_TETRA
+from vtkmodules.vtkCommonDataModel import VTK_BEZIER_TRIANGLE, VTK_QUADRATIC_TETRA, VTK_QUADRATIC_TRIANGLE
 
 from label_nrrd import read_label_nrrd
 from LabelMesherLib.meshing import (Material, MeshingCancelled, MeshingError, MeshingParameters,
@@ -274,6 +274,52 @@ def quadratic_jacobians(nodes, barycentric):
                 g = g + 4.0 * L[:, j if k == i else i][None, :, None] * nodes[:, None, 4 + e, :]
         along.append(g)
     return np.linalg.det(np.stack([along[1] - along[0], along[2] - along[0], along[3] - along[0]], axis=-1))
+
+
+
+class QuadraticSliceTest(unittest.TestCase):
+    """The same slice as quadratic triangles (slice_order 2: vtkLabelMesher's Order 2 of a 2D
+    image), placed obliquely with a reflection: 6-node cells in the slice's plane, positive det J
+    from the written nodes, and the curve report of an order-2 run."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.labels, spacing = read_label_nrrd(os.path.join(DATA, "2d/digimouse_sagittal.nrrd"))
+        cls.matrix = oblique_ijk_to_ras(spacing[:2].tolist() + [0.2], (1.0, 2.0, 3.0))
+        cls.result = mesh_labels(cls.labels, cls.matrix, parameters=MeshingParameters(curve=True, slice_order=2))
+
+    def test_quadratic_triangles_valid_from_their_nodes(self):
+        mesh = self.result.mesh
+        self.assertTrue(np.all(vtk_to_numpy(mesh.GetCellTypesArray()) == VTK_QUADRATIC_TRIANGLE))
+        connectivity = vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 6)
+        axes = self.matrix[:3, :2] / np.linalg.norm(self.matrix[:3, :2], axis=0)
+        planar = ((points(mesh) - (1.0, 2.0, 3.0)) @ axes)[connectivity]
+        dets = []
+        for r, t in ((0.1, 0.1), (0.8, 0.1), (0.1, 0.8), (0.45, 0.45), (1 / 3, 1 / 3), (0.0, 0.5), (0.5, 0.0)):
+            u = 1 - r - t
+            # derivatives of u(2u-1), r(2r-1), t(2t-1), 4ur, 4rt, 4tu along r and t
+            dr = np.array([1 - 4 * u, 4 * r - 1, 0, 4 * (u - r), 4 * t, -4 * t])
+            dt = np.array([1 - 4 * u, 0, 4 * t - 1, -4 * r, 4 * r, 4 * (u - t)])
+            xr, xt = np.einsum("k,ckd->cd", dr, planar), np.einsum("k,ckd->cd", dt, planar)
+            dets.append(xr[:, 0] * xt[:, 1] - xr[:, 1] * xt[:, 0])
+        dets = np.array(dets) * np.sign(dets[0][0])
+        self.assertTrue(np.all(dets > 0.0), f"smallest {dets.min()}")
+
+    def test_report_is_the_curve_report_of_order_2(self):
+        curve = self.result.report["curve"]
+        self.assertEqual(curve["curved_mesh"]["order"], 2)
+        self.assertEqual(curve["curved_mesh"]["cell_type"], "quadratic_triangle")
+        self.assertTrue(curve["validity"]["valid"] and curve["validity"]["scaled_jacobian_bound_holds"])
+        self.assertTrue(curve["curved_mesh"]["within_bounds"])
+        self.assertLess(curve["accuracy"]["misclassified_curved"], curve["accuracy"]["misclassified_linear"])
+        self.assertIn("quadratic triangles", self.result.summary)
+
+    def test_bad_order_or_no_decimation_is_one_plain_error(self):
+        with self.assertRaisesRegex(MeshingError, "order 2 or 3"):
+            mesh_labels(self.labels, self.matrix, parameters=MeshingParameters(curve=True, slice_order=4))
+        with self.assertRaisesRegex(MeshingError, "^curving a slice into quadratic triangles needs decimation"):
+            mesh_labels(self.labels, self.matrix,
+                        parameters=MeshingParameters(curve=True, slice_order=2, decimate=False))
 
 
 class QuadraticVolumeTest(unittest.TestCase):

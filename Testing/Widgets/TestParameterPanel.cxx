@@ -41,6 +41,7 @@ private slots:
     QVERIFY(panel.decimate());
     QVERIFY(!panel.curve()); // curving is asked for, not a default
     QCOMPARE(panel.smoothness(), 1);
+    QCOMPARE(panel.sliceOrder(), 3); // a slice's curved cells: cubic Bezier triangles
     QCOMPARE(panel.tension(), 0.333);
     QCOMPARE(panel.property("minimumAngle").toDouble(), 15.0); // a Q_PROPERTY
     QCOMPARE(panel.blockCells(), 1000000); // vtkLabelMesher's and the CLI's default
@@ -136,6 +137,8 @@ private slots:
     QCOMPARE(panel.tension(), 1.0);
     panel.setSmoothness(3);
     QCOMPARE(panel.smoothness(), 1);
+    panel.setSliceOrder(4);
+    QCOMPARE(panel.sliceOrder(), 3);
   }
 
   void angleLimitFollowsTheImageDimension()
@@ -173,8 +176,18 @@ private slots:
     panel.setImageGeometry(2, 1.0);
     QVERIFY(panel.curve()); // the choice is kept: a 2D image is curved without decimation too
     QVERIFY(child<QComboBox>(panel, "smoothness")->isEnabled());
-    panel.setImageGeometry(3, 1.0);
+    // Quadratic triangles are made of the decimated mesh only, as quadratic tetrahedra are.
+    QVERIFY(child<QComboBox>(panel, "sliceOrder")->isEnabled());
+    QSignalSpy order(&panel, &ParameterPanel::sliceOrderChanged);
+    panel.setSliceOrder(2);
+    QCOMPARE(order.count(), 1);
+    QCOMPARE(order.at(0).at(0).toInt(), 2);
+    QVERIFY(!panel.curve());
     panel.setDecimate(true);
+    QVERIFY(panel.curve());
+    panel.setSliceOrder(3);
+    panel.setImageGeometry(3, 1.0);
+    QVERIFY(!child<QComboBox>(panel, "sliceOrder")->isEnabled()); // a volume's cells are tetrahedra
     QVERIFY(panel.curve());
   }
 

@@ -34,6 +34,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <array>
+#include <utility>
+
 #include <limits>
 #include <memory>
 
@@ -561,6 +564,70 @@ private slots:
     QVERIFY(!Window->curveReport().has_value());
     QVERIFY(!Window->view()->showsCurvedCells());
     QCOMPARE(Window->view()->drawnEdges(), static_cast<vtkIdType>(0));
+  }
+
+  void curvesA2DImageIntoQuadraticTriangles()
+  {
+    // The digimouse slice is still open; the panel's Curved cells choice makes 6-node triangles.
+    QCOMPARE(Window->parameters()->imageDimension(), 2);
+    QSignalSpy finished(Window.get(), &MainWindow::meshingFinished);
+    QSignalSpy errors(Window.get(), &MainWindow::errorOccurred);
+    Window->parameters()->setCurve(true);
+    Window->parameters()->setSmoothness(1);
+    Window->parameters()->setSliceOrder(2);
+    QCOMPARE(Window->parameters()->sliceOrder(), 2);
+    QVERIFY(Window->startMeshing());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, kRunTimeoutMs);
+    QCOMPARE(errors.count(), 0);
+    QVERIFY(Window->curveReport().has_value());
+    const labelmesher::report::CurveReport& c = *Window->curveReport();
+    QCOMPARE(c.Order, 2);
+    QVERIFY(c.Valid() && c.ScaledJacobianHolds() && c.CornerAnglesHold() && c.CurvesFaithful());
+    QVERIFY(Window->summaryText().contains("quadratic triangles"));
+    vtkUnstructuredGrid* shown = Window->view()->mesh();
+    QVERIFY(shown);
+    QVERIFY(Window->view()->showsCurvedCells());
+    QVERIFY(Window->view()->drawnEdges() > 0);
+    // Each shown cell: six nodes whose det J (the quadratic's, from its nodes) keeps one sign.
+    vtkNew<vtkIdList> ids;
+    double orientation = 0.0;
+    for (vtkIdType cell = 0; cell < shown->GetNumberOfCells(); ++cell)
+    {
+      QCOMPARE(shown->GetCellType(cell), static_cast<int>(VTK_QUADRATIC_TRIANGLE));
+      shown->GetCellPoints(cell, ids);
+      QCOMPARE(ids->GetNumberOfIds(), static_cast<vtkIdType>(6));
+      std::array<std::array<double, 3>, 6> n{};
+      for (int k = 0; k < 6; ++k)
+        shown->GetPoint(ids->GetId(k), n[static_cast<std::size_t>(k)].data());
+      for (const auto& [r, t] : { std::pair{ 0.1, 0.1 }, std::pair{ 0.8, 0.1 }, std::pair{ 0.1, 0.8 }, std::pair{ 0.4, 0.4 } })
+      {
+        const double u = 1.0 - r - t;
+        const double dr[6] = { 1 - 4 * u, 4 * r - 1, 0, 4 * (u - r), 4 * t, -4 * t };
+        const double dt[6] = { 1 - 4 * u, 0, 4 * t - 1, -4 * r, 4 * r, 4 * (u - t) };
+        double xr[2] = { 0, 0 }, xt[2] = { 0, 0 };
+        for (int k = 0; k < 6; ++k)
+          for (int a = 0; a < 2; ++a)
+          {
+            xr[a] += dr[k] * n[static_cast<std::size_t>(k)][static_cast<std::size_t>(a)];
+            xt[a] += dt[k] * n[static_cast<std::size_t>(k)][static_cast<std::size_t>(a)];
+          }
+        const double det = xr[0] * xt[1] - xr[1] * xt[0];
+        if (orientation == 0.0)
+          orientation = det > 0.0 ? 1.0 : -1.0;
+        QVERIFY2(det * orientation > 0.0, qPrintable(QString("cell %1: det J %2").arg(cell).arg(det)));
+      }
+    }
+    // Saved as the CLI writes quadratic cells: .inp and .mesh too; surface formats refused.
+    QVERIFY(Window->saveMesh(Folder.filePath("quadratic.inp")));
+    QVERIFY(Window->saveMesh(Folder.filePath("quadratic.msh")));
+    QVERIFY(!Window->saveMesh(Folder.filePath("quadratic.obj")));
+    QVERIFY(!QFile::exists(Folder.filePath("quadratic.obj")));
+    // Without decimation a slice's quadratic cells cannot be made: curve() is off, as for volumes.
+    Window->parameters()->setDecimate(false);
+    QVERIFY(!Window->parameters()->curve());
+    Window->parameters()->setDecimate(true);
+    Window->parameters()->setSliceOrder(3);
+    Window->parameters()->setCurve(false);
   }
 
   void oneRowImageHasTheFiltersVoxel()

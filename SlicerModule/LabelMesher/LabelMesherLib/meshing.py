@@ -68,6 +68,10 @@ class MeshingParameters:
     curve: bool = _DEFAULTS.GetCurve()
     smoothness: int = _DEFAULTS.GetSmoothness()  # a slice's curves: 1 (C1, fitted to the image) or 2 (C2) at their joints
     tension: float = _DEFAULTS.GetTension()  # a slice's C1 curves: handle length factor, dimensionless, [0, 1]
+    # A slice's curved cells: 3, cubic Bezier triangles (Curve); 2, quadratic triangles (6 nodes,
+    # vtkLabelMesher's Order 2 of a 2D image: the same certificates, curves of one control point;
+    # decimation only).
+    slice_order: int = 3
     block_cells: int = _DEFAULTS.GetBlockCells()  # decimating: initial cells per block (0: one block)
     memory_limit: float = _DEFAULTS.GetMemoryLimit()  # MiB the process may hold; a run estimated above it is refused (0: available memory)
 
@@ -88,6 +92,10 @@ class MeshingParameters:
             # vtkLabelMesher refuses Order 2 without Decimate: its quadratic cells are the decimated ones.
             raise MeshingError("curving a volume (quadratic tetrahedra) needs decimation: turn decimation on")
         if self.curve and dimension == 2:
+            if self.slice_order not in (2, 3):
+                raise MeshingError(f"a slice's curved cells are of order 2 or 3, not {self.slice_order}")
+            if self.slice_order == 2 and not self.decimate:
+                raise MeshingError("curving a slice into quadratic triangles needs decimation: turn decimation on")
             if self.smoothness not in (1, 2):
                 raise MeshingError(f"smoothness must be 1 (C1) or 2 (C2), not {self.smoothness}")
             if not (0.0 <= self.tension <= 1.0):
@@ -107,7 +115,8 @@ class Placement:
 
 @dataclass
 class MeshingResult:
-    # In RAS, cell data "Material". Curved: a slice's VTK_BEZIER_TRIANGLE cells, or a volume's
+    # In RAS, cell data "Material". Curved: a slice's VTK_BEZIER_TRIANGLE (or, slice_order 2,
+    # VTK_QUADRATIC_TRIANGLE) cells, or a volume's
     # VTK_QUADRATIC_TETRA cells (10 nodes in VTK's order, cell data "ScaledJacobian": each cell's
     # certified lower bound of min det J / max det J); the linear mesh is then only in the report.
     mesh: vtkUnstructuredGrid
@@ -239,7 +248,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
                 should_abort: Optional[Callable[[], bool]] = None) -> MeshingResult:
     """Meshes a label array placed by ijk_to_ras with vtkLabelMesher (mesher and decimator block by
     block, or the mesher alone without parameters.decimate; then, with parameters.curve, a slice's
-    cubic curver (Curve) or a volume's quadratic tetrahedra (Order 2)); returns the mesh in RAS (the
+    cubic curver (Curve) or quadratic triangles (Order 2, parameters.slice_order 2) or a volume's
+    quadratic tetrahedra (Order 2)); returns the mesh in RAS (the
     curved one when curving) and vtkLabelMeshReport's report. Raises MeshingError (bad input, the
     filter's error, an untangling failure) or MeshingCancelled."""
     parameters = parameters or MeshingParameters()
@@ -248,6 +258,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     dimension = _MESHER.GetImageDimension(image)
     parameters.validate(dimension)
     quadratic = parameters.curve and dimension == 3  # a volume's curved cells: quadratic tetrahedra
+    # A slice's curved cells: cubic Bezier triangles (Curve) or quadratic triangles (Order 2).
+    cubic = parameters.curve and dimension == 2 and parameters.slice_order == 3
     known = {m.label: m for m in materials}
     present = sorted(int(v) for v in np.unique(vtk_to_numpy(image.GetPointData().GetScalars()))
                      if v or parameters.include_background)
@@ -264,8 +276,8 @@ def mesh_labels(labels_kji, ijk_to_ras, materials: Sequence[Material] = (),
     mesher.SetIncludeBackground(parameters.include_background)
     mesher.SetMemoryLimit(parameters.memory_limit)
     mesher.SetMeasureOutput(True)
-    mesher.SetCurve(parameters.curve and not quadratic)  # a slice: cubic Bezier triangles
-    mesher.SetOrder(2 if quadratic else 1)
+    mesher.SetCurve(cubic)
+    mesher.SetOrder(2 if parameters.curve and not cubic else 1)
     mesher.SetSmoothness(parameters.smoothness)
     mesher.SetTension(parameters.tension)
     errors: List[str] = []

@@ -85,117 +85,73 @@ void GroupFacesByPair(const std::vector<ExportMesh::Pair>& pairs, const std::vec
   GroupRuns(sortedPairs, out.Interfaces, out.InterfaceFaces);
 }
 
-/// The interfaces of a quadratic tetrahedral mesh as 6-node triangles (corners, then the
-/// mid-nodes of edges 0-1, 1-2, 2-0: VTK's and Gmsh's order), taken from its cells: every face
-/// between cells of two materials, and every face of one cell alone (against the background or
-/// the image's box: material 0), as the linear interface surface has them. Oriented out of the
-/// cell of the smaller material (cells are sorted by material), in face order of first use.
-void QuadraticInterfaceFaces(ExportMesh& out)
+/// The interfaces of a quadratic mesh taken from its cells, as the linear interface surface has
+/// them: every facet between cells of two materials, and every facet of one cell alone (against
+/// the background or the image's box: material 0; background cells' own box facets, 0 against 0
+/// with the background written, bound nothing). Tetrahedra give 6-node triangles (corners, then
+/// the mid-nodes of edges 0-1, 1-2, 2-0: VTK's and Gmsh's order), oriented out of the cell of the
+/// smaller material; triangles give 3-node segments (ends, then the mid-node), each running as
+/// its edge in the cell of the smaller material (counter-clockwise in a flat mesh: that material
+/// on its left). Cells are sorted by material; facets come in order of first use.
+void QuadraticInterfaceFacets(ExportMesh& out)
 {
-  // The faces of a positively oriented tetrahedron, outward: corners, then the cell's node
-  // slots (4-9: edges 01, 12, 20, 03, 13, 23) of the edges 0-1, 1-2, 2-0 of the face.
+  // A positively oriented tetrahedron's faces, outward: corners, then the cell's node slots
+  // (4-9: edges 01, 12, 20, 03, 13, 23) of the face's edges 0-1, 1-2, 2-0. A triangle's edges:
+  // ends, then the mid-node's slot (3-5: edges 01, 12, 20).
   static constexpr int kFace[4][6] = { { 1, 2, 3, 5, 9, 8 }, { 0, 3, 2, 7, 9, 6 }, { 0, 1, 3, 4, 8, 7 },
     { 0, 2, 1, 6, 5, 4 } };
+  static constexpr int kEdge[3][6] = { { 0, 1, 3 }, { 1, 2, 4 }, { 2, 0, 5 } };
+  const bool volume = out.Dimension == 3;
+  const auto facets = static_cast<std::size_t>(volume ? 4 : 3);
+  const auto corners = static_cast<std::size_t>(out.Dimension); // of a facet
+  const auto cellNodes = static_cast<std::size_t>(out.NodesPerCell());
+  const auto facetNodes = static_cast<std::size_t>(out.NodesPerFace());
+  auto slotOf = [&](std::size_t facet, std::size_t k) {
+    return static_cast<std::size_t>(volume ? kFace[facet][k] : kEdge[facet][k]);
+  };
   struct Use
   {
-    std::array<std::int64_t, 3> Key;
-    std::size_t Cell;
-    int Face;
+    std::array<std::int64_t, 3> Key; ///< the facet's sorted corners (a segment's third: -1)
+    std::size_t Slot;                ///< cell * facets + facet
   };
   std::vector<Use> uses;
-  uses.reserve(out.NumberOfCells() * 4);
+  uses.reserve(out.NumberOfCells() * facets);
   for (std::size_t c = 0; c < out.NumberOfCells(); ++c)
-    for (int f = 0; f < 4; ++f)
+    for (std::size_t f = 0; f < facets; ++f)
     {
-      std::array<std::int64_t, 3> key;
-      for (int k = 0; k < 3; ++k)
-        key[static_cast<std::size_t>(k)] = out.Cells[c * 10 + static_cast<std::size_t>(kFace[f][k])];
-      std::sort(key.begin(), key.end());
-      uses.push_back({ key, c, f });
+      std::array<std::int64_t, 3> key{ -1, -1, -1 };
+      for (std::size_t k = 0; k < corners; ++k)
+        key[k] = out.Cells[c * cellNodes + slotOf(f, k)];
+      std::sort(key.begin(), key.begin() + static_cast<std::ptrdiff_t>(corners));
+      uses.push_back({ key, c * facets + f });
     }
   std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
-    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
+    return a.Key != b.Key ? a.Key < b.Key : a.Slot < b.Slot;
   });
-  std::vector<ExportMesh::Pair> pairs;
-  std::vector<std::int64_t> faces;
-  std::vector<std::pair<std::size_t, std::size_t>> found; // (cell, face) of each, then sorted
+  std::vector<std::pair<std::size_t, std::int32_t>> found; // (slot, the material beyond it)
   for (std::size_t u = 0; u < uses.size();)
   {
     std::size_t next = u + 1;
     while (next < uses.size() && uses[next].Key == uses[u].Key)
       ++next;
-    const std::int32_t first = out.CellMaterial[uses[u].Cell];
-    const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Cell] : 0;
-    // A face of one cell bounds it against the background or the box (0); background cells'
-    // own box faces (0 against 0, with the background written) bound nothing.
+    const std::int32_t first = out.CellMaterial[uses[u].Slot / facets];
+    const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Slot / facets] : 0;
     if (first != second)
-      found.emplace_back(uses[u].Cell * 4 + static_cast<std::size_t>(uses[u].Face), static_cast<std::size_t>(second));
-    u = next;
-  }
-  std::sort(found.begin(), found.end());
-  for (const auto& [slot, other] : found)
-  {
-    const std::size_t c = slot / 4;
-    const int f = static_cast<int>(slot % 4);
-    const std::int32_t a = out.CellMaterial[c], b = static_cast<std::int32_t>(other);
-    pairs.push_back({ std::min(a, b), std::max(a, b) });
-    for (int k = 0; k < 6; ++k)
-      faces.push_back(out.Cells[c * 10 + static_cast<std::size_t>(kFace[f][k])]);
-  }
-  GroupFacesByPair(pairs, faces, out);
-}
-
-/// The interfaces of a quadratic triangle mesh as 3-node segments (ends, then the mid-node), taken
-/// from its cells: every edge between cells of two materials, and every edge of one cell alone
-/// (against the background or the image's box: material 0). Each runs as its edge in the cell of
-/// the smaller material (counter-clockwise in a flat mesh: that material on its left), in order of
-/// first use.
-void QuadraticInterfaceSegments(ExportMesh& out)
-{
-  struct Use
-  {
-    std::array<std::int64_t, 2> Key;
-    std::size_t Cell;
-    int Edge; ///< from corner Edge to corner (Edge + 1) % 3, mid-node at slot 3 + Edge
-  };
-  std::vector<Use> uses;
-  uses.reserve(out.NumberOfCells() * 3);
-  for (std::size_t c = 0; c < out.NumberOfCells(); ++c)
-    for (int e = 0; e < 3; ++e)
-    {
-      const std::int64_t a = out.Cells[c * 6 + static_cast<std::size_t>(e)];
-      const std::int64_t b = out.Cells[c * 6 + static_cast<std::size_t>((e + 1) % 3)];
-      uses.push_back({ { std::min(a, b), std::max(a, b) }, c, e });
-    }
-  std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
-    return a.Key != b.Key ? a.Key < b.Key : a.Cell < b.Cell;
-  });
-  std::vector<std::pair<std::size_t, std::int32_t>> found; // (cell * 3 + edge, other material)
-  for (std::size_t u = 0; u < uses.size();)
-  {
-    std::size_t next = u + 1;
-    while (next < uses.size() && uses[next].Key == uses[u].Key)
-      ++next;
-    const std::int32_t first = out.CellMaterial[uses[u].Cell];
-    const std::int32_t second = next - u >= 2 ? out.CellMaterial[uses[u + 1].Cell] : 0;
-    if (first != second)
-      found.emplace_back(uses[u].Cell * 3 + static_cast<std::size_t>(uses[u].Edge), second);
+      found.emplace_back(uses[u].Slot, second);
     u = next;
   }
   std::sort(found.begin(), found.end());
   std::vector<ExportMesh::Pair> pairs;
-  std::vector<std::int64_t> segments;
+  std::vector<std::int64_t> nodes;
   for (const auto& [slot, other] : found)
   {
-    const std::size_t c = slot / 3;
-    const auto e = slot % 3;
+    const std::size_t c = slot / facets, f = slot % facets;
     const std::int32_t a = out.CellMaterial[c];
     pairs.push_back({ std::min(a, other), std::max(a, other) });
-    segments.push_back(out.Cells[c * 6 + e]);
-    segments.push_back(out.Cells[c * 6 + (e + 1) % 3]);
-    segments.push_back(out.Cells[c * 6 + 3 + e]);
+    for (std::size_t k = 0; k < facetNodes; ++k)
+      nodes.push_back(out.Cells[c * cellNodes + slotOf(f, k)]);
   }
-  GroupFacesByPair(pairs, segments, out);
+  GroupFacesByPair(pairs, nodes, out);
 }
 
 /// The cubic Bezier triangles' control points (VTK order: corners, two per edge, the centre) moved
@@ -345,13 +301,9 @@ ExportMesh MakeExportMesh(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, co
     }
     GroupFacesByPair(pairs, faces, out);
   }
-  else if (out.Order == 2 && out.Dimension == 3)
-  {
-    QuadraticInterfaceFaces(out);
-  }
   else if (out.Order == 2)
   {
-    QuadraticInterfaceSegments(out);
+    QuadraticInterfaceFacets(out);
   }
 
   if (out.Dimension == 2 && !out.Points.empty())

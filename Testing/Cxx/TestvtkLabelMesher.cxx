@@ -246,31 +246,43 @@ TEST(vtkLabelMesher, DecimateOffIsTheMesherExactly)
   EXPECT_GE(FieldScalar(composite->GetOutput(), arrays::MinimumAngle), vtkLabelMesher::GetProvenAngleBound(3) - 1e-9);
 }
 
-TEST(vtkLabelMesher, CurveIsTheCurverOnTheLinearMesh)
+/// Runs `composite` (configured by the caller) on `image` and vtkLabelMesher then vtkBezierCurver
+/// (configured by `configureCurver`) on the same image, and expects port 2 to be the curver's
+/// output and port 0 the linear mesh. Returns the composite's curved output.
+template <typename ConfigureCurver>
+vtkUnstructuredGrid* ExpectCompositeIsMesherThenCurver(
+  vtkImageData* image, vtkLabelMesher* composite, ConfigureCurver configureCurver)
 {
-  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
-  vtkNew<vtkLabelMesher> composite;
   composite->SetInputData(image);
-  composite->CurveOn();
-  composite->SetSmoothness(2);
   MessageRecorder errors(composite, vtkCommand::ErrorEvent);
   composite->Update();
   EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
-
   vtkNew<vtkLabelMesher> linear;
   linear->SetInputData(image);
   vtkNew<vtkBezierCurver> curver;
   curver->SetInputConnection(0, linear->GetOutputPort(0));
   curver->SetInputDataObject(1, image);
-  curver->SetSmoothness(2);
+  configureCurver(curver.GetPointer());
   curver->Update();
   vtkUnstructuredGrid* curved = composite->GetCurvedOutput();
-  ASSERT_GT(curved->GetNumberOfCells(), 0);
-  EXPECT_EQ(curved->GetCellType(0), VTK_BEZIER_TRIANGLE);
+  EXPECT_GT(curved->GetNumberOfCells(), 0);
   EXPECT_TRUE(SameGrid(curved, curver->GetOutput()));
   EXPECT_TRUE(SameGrid(composite->GetOutput(), linear->GetOutput())) << "port 0 stays the linear mesh";
-  EXPECT_EQ(FieldScalar(curved, arrays::Smoothness), 2.0);
   EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
+  return curved;
+}
+
+TEST(vtkLabelMesher, CurveIsTheCurverOnTheLinearMesh)
+{
+  auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
+  vtkNew<vtkLabelMesher> composite;
+  composite->CurveOn();
+  composite->SetSmoothness(2);
+  vtkUnstructuredGrid* curved =
+    ExpectCompositeIsMesherThenCurver(image, composite, [](vtkBezierCurver* curver) { curver->SetSmoothness(2); });
+  ASSERT_GT(curved->GetNumberOfCells(), 0);
+  EXPECT_EQ(curved->GetCellType(0), VTK_BEZIER_TRIANGLE);
+  EXPECT_EQ(FieldScalar(curved, arrays::Smoothness), 2.0);
 }
 
 TEST(vtkLabelMesher, CurveOnAThreeDimensionalImageIsOneError)
@@ -500,26 +512,12 @@ TEST(vtkLabelMesher, OrderTwoOnATwoDimensionalImageGivesQuadraticTriangles)
 {
   auto image = MakeVtkImage2D(MakeDiscSliceXZ(40, 14.0), 40, 40);
   vtkNew<vtkLabelMesher> composite;
-  composite->SetInputData(image);
   composite->SetOrder(2);
-  MessageRecorder errors(composite, vtkCommand::ErrorEvent);
-  composite->Update();
-  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages.front();
-
-  vtkNew<vtkLabelMesher> linear;
-  linear->SetInputData(image);
-  vtkNew<vtkBezierCurver> curver;
-  curver->SetInputConnection(0, linear->GetOutputPort(0));
-  curver->SetInputDataObject(1, image);
-  curver->SetOrder(2);
-  curver->Update();
-  vtkUnstructuredGrid* curved = composite->GetCurvedOutput();
+  vtkUnstructuredGrid* curved =
+    ExpectCompositeIsMesherThenCurver(image, composite, [](vtkBezierCurver* curver) { curver->SetOrder(2); });
   ASSERT_GT(curved->GetNumberOfCells(), 0);
   EXPECT_EQ(curved->GetCellType(0), VTK_QUADRATIC_TRIANGLE);
-  EXPECT_TRUE(SameGrid(curved, curver->GetOutput()));
-  EXPECT_TRUE(SameGrid(composite->GetOutput(), linear->GetOutput())) << "port 0 stays the linear mesh";
   EXPECT_EQ(FieldScalar(curved, arrays::Order), 2.0);
-  EXPECT_EQ(FieldScalar(curved, arrays::InvalidCells), 0.0);
   // Nodes: the linear mesh's vertices, then one per edge (no ear is split: the corner bound is on).
   vtkUnstructuredGrid* mesh = composite->GetOutput();
   std::set<std::pair<vtkIdType, vtkIdType>> edges;

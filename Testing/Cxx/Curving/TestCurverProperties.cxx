@@ -39,13 +39,10 @@ std::string Violations(const std::vector<std::string>& violated)
   return out.str();
 }
 
-class CurverProperties : public ::testing::TestWithParam<int>
+/// One shard: `kImagesPerShard` random images from `first`, through the curver of `order`, every
+/// guarantee asserted (CurverGuarantees.h); C1 or C2 drawn per seed.
+void ExpectEveryGuaranteeOnAShard(std::uint64_t first, int order)
 {
-};
-
-TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
-{
-  const std::uint64_t first = kFirstSeed + static_cast<std::uint64_t>(GetParam()) * kImagesPerShard;
   std::size_t shortened = 0, pieces = 0;
   for (std::uint64_t seed = first; seed < first + kImagesPerShard; ++seed)
   {
@@ -54,16 +51,26 @@ TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
     const DecimationParameters decimation = testing::DrawDecimationParameters(seed, 2, mesher);
     const Smoothness smoothness = testing::DrawSmoothness(seed);
     testing::CurverRun run;
-    const auto violated = testing::ViolatedCurverGuarantees(random.Image, mesher, decimation, smoothness, &run);
+    const auto violated = testing::ViolatedCurverGuarantees(
+      random.Image, mesher, decimation, smoothness, &run, testing::kCurvedScaledJacobian, -1.0, order);
     ASSERT_TRUE(violated.empty()) << "seed " << seed << ", h = " << mesher.ImageToMeshDistance << "/"
                                   << mesher.MeshToImageDistance << ", angle " << decimation.MinimumAngle << ", C"
-                                  << static_cast<int>(smoothness) << "\n"
+                                  << static_cast<int>(smoothness) << ", order " << order << "\n"
                                   << Violations(violated) << random.Describe();
     shortened += run.Result.ShortenedPieces;
     pieces += run.Result.Pieces.size();
   }
-  std::cout << "[ curver ] seeds " << first << "-" << first + kImagesPerShard - 1 << ": " << shortened << " of "
-            << pieces << " pieces shortened\n";
+  std::cout << "[ curver ] order " << order << ", seeds " << first << "-" << first + kImagesPerShard - 1 << ": "
+            << shortened << " of " << pieces << " pieces shortened\n";
+}
+
+class CurverProperties : public ::testing::TestWithParam<int>
+{
+};
+
+TEST_P(CurverProperties, ValidContinuousWithinBoundsOnRandomImages)
+{
+  ExpectEveryGuaranteeOnAShard(kFirstSeed + static_cast<std::uint64_t>(GetParam()) * kImagesPerShard, 3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, CurverProperties, ::testing::Range(0, 4));
@@ -145,26 +152,7 @@ constexpr std::uint64_t kFirstQuadraticSeed = 7400;
 
 TEST_P(QuadraticTriangleProperties, ValidQuadraticWithinBoundsOnRandomImages)
 {
-  const std::uint64_t first = kFirstQuadraticSeed + static_cast<std::uint64_t>(GetParam()) * kImagesPerShard;
-  std::size_t shortened = 0, pieces = 0;
-  for (std::uint64_t seed = first; seed < first + kImagesPerShard; ++seed)
-  {
-    const testing::RandomLabelImage random = testing::GenerateRandomLabelImageWithDescription(seed, 2);
-    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
-    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, 2, mesher);
-    const Smoothness smoothness = testing::DrawSmoothness(seed);
-    testing::CurverRun run;
-    const auto violated = testing::ViolatedCurverGuarantees(
-      random.Image, mesher, decimation, smoothness, &run, testing::kCurvedScaledJacobian, -1.0, 2);
-    ASSERT_TRUE(violated.empty()) << "seed " << seed << ", h = " << mesher.ImageToMeshDistance << "/"
-                                  << mesher.MeshToImageDistance << ", angle " << decimation.MinimumAngle << ", C"
-                                  << static_cast<int>(smoothness) << ", order 2\n"
-                                  << Violations(violated) << random.Describe();
-    shortened += run.Result.ShortenedPieces;
-    pieces += run.Result.Pieces.size();
-  }
-  std::cout << "[ curver ] order 2, seeds " << first << "-" << first + kImagesPerShard - 1 << ": " << shortened
-            << " of " << pieces << " pieces shortened\n";
+  ExpectEveryGuaranteeOnAShard(kFirstQuadraticSeed + static_cast<std::uint64_t>(GetParam()) * kImagesPerShard, 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, QuadraticTriangleProperties, ::testing::Range(0, 2));

@@ -9,8 +9,13 @@
 #include "Fill/MeshAssembler.h"
 #include "LabelOctreeMesher.h"
 #include "Streaming/BlockPlan.h"
+#include "Streaming/MeshPart.h"
+#include "Streaming/PartExchange.h"
 
 #include <algorithm>
+#include <cmath>
+#include <exception>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -194,8 +199,37 @@ public:
     }
   }
 
+  /// Appends a part's cells; its border vertices are shared with the parts before it by position.
+  void Add(const MeshPart& part)
+  {
+    std::vector<std::int64_t> id(part.Mesh.Points.size());
+    for (std::size_t v = 0; v < id.size(); ++v)
+    {
+      const Point3& x = part.Mesh.Points[v];
+      const Lattice p{ static_cast<std::int32_t>(std::lround(2 * x[0])), static_cast<std::int32_t>(std::lround(2 * x[1])),
+        static_cast<std::int32_t>(std::lround(2 * x[2])) };
+      id[v] = VertexOf(p, part.Border[v] != 0);
+      Offered[static_cast<std::size_t>(id[v])] |= part.Offered[v];
+    }
+    for (std::int64_t v : part.Mesh.Connectivity)
+      Mesh.Connectivity.push_back(id[static_cast<std::size_t>(v)]);
+    Mesh.Materials.insert(Mesh.Materials.end(), part.Mesh.Materials.begin(), part.Mesh.Materials.end());
+  }
+
+  /// What is left once the assembly is handed on as a part.
+  void MoveTo(MeshPart& part)
+  {
+    part.Mesh = std::move(Mesh);
+    part.Offered = std::move(Offered);
+    part.Border = std::move(Border);
+    *this = BlockAssembly(part.Mesh.Dimension);
+  }
+
   SimplexMesh Mesh;
   std::vector<std::uint8_t> Offered; ///< per vertex of Mesh
+  /// Per vertex of Mesh: on a border of the blocks it came from (every
+  /// vertex on the assembly's own border is; some inside it too).
+  std::vector<std::uint8_t> Border;
 
 private:
   std::int64_t VertexOf(const Lattice& p, bool shared)
@@ -212,6 +246,7 @@ private:
     }
     Mesh.Points.push_back({ p[0] / 2.0, p[1] / 2.0, Mesh.Dimension == 2 ? 0.0 : p[2] / 2.0 });
     Offered.push_back(0);
+    Border.push_back(shared ? 1 : 0);
     return next;
   }
   std::unordered_map<std::uint64_t, std::int64_t> Shared;
@@ -307,10 +342,244 @@ void DecimateAssembled(const PieceContext& context, const KeyRange& keys, const 
   assembly.Add(mesh, scope.Frozen);
 }
 
-} // namespace
+/// Where a part ends: the leaf after its last, and whether it was the whole mesh.
+struct PartRun
+{
+  std::size_t End = 0;
+  bool Whole = false;
+};
 
-StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
-  const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer)
+/// One part: PartBlocks blocks (every block when 0) from leaf `partFirst` on,
+/// each filled, decimated with its border frozen and released, what is left
+/// of it joined to `part`, with border passes between them as the blocks
+/// grow (their keys from `partFirst` on: the part knows no other). When the
+/// part is one block of every leaf, that block is the whole mesh: finished
+/// into `whole` instead.
+PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& leaves, std::size_t partFirst,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
+  MeshPart& part, DecimationResult& whole)
+{
+  const LabelImage& image = context.Image;
+  const int dimension = image.Dimension();
+  const int depth = context.Depth;
+  const std::vector<VoxelBox>& near = context.Near;
+  std::vector<StageTiming> timings;
+  StageClock clock(timings);
+  BlockAssembly assembly(dimension);
+  const std::size_t minimumBorderPass = std::max<std::size_t>(1, streaming.BlockCells / 4);
+  std::size_t nextBorderPass = minimumBorderPass;
+  // Per image face: certified by a finished block of this part (its
+  // certificate lies in cells no later block changes), or selected for the
+  // block under way.
+  std::vector<std::uint8_t> settled(near.size(), 0), selected(near.size(), 0);
+  const double blocksStart = 0.15, blocksShare = 0.7;
+  std::size_t first = partFirst;
+  auto partGoesOn = [&] {
+    return first < leaves.size() && (streaming.PartBlocks == 0 || part.Blocks < streaming.PartBlocks);
+  };
+  while (partGoesOn())
+  {
+    ReleaseFreedMemory(); // the previous block's and border pass's
+    // Fill leaves until the block holds BlockCells cells.
+    const double start = blocksStart + blocksShare * double(first) / double(leaves.size());
+    if (!observer.Report("fill", start))
+      throw AbortRequested{};
+    MeshAssembler assembler(dimension);
+    std::vector<std::size_t> cellEnd; // per leaf of the block
+    std::size_t last = first;
+    while (last < leaves.size() && (streaming.BlockCells == 0 || assembler.NumberOfCells() < streaming.BlockCells))
+    {
+      FillLeaf(image, leaves[last++], assembler);
+      cellEnd.push_back(assembler.NumberOfCells());
+    }
+    const bool isWhole = first == 0 && last == leaves.size();
+    const KeyRange keys = LeafRunKeys(leaves, first, last, dimension, depth);
+    ++part.Blocks;
+    part.LargestBlockCells = std::max(part.LargestBlockCells, assembler.NumberOfCells());
+    clock.Finish("fill");
+
+    // The block certifies the image faces near it that no earlier block
+    // did; around those it cannot (their certificates lie beyond its
+    // border), its cells are frozen.
+    for (std::size_t f = 0; f < near.size(); ++f)
+      selected[f] = !settled[f] && keys.MayMeet(near[f]);
+    SimplexMesh filled = assembler.Release();
+    part.ForegroundCellsBefore += static_cast<std::size_t>(
+      std::count_if(filled.Materials.begin(), filled.Materials.end(), [](std::int32_t m) { return m != 0; }));
+    DecimationScope scope;
+    scope.ImageFaces = &selected;
+    scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
+                         std::vector<std::uint8_t>& frozen) {
+      const BoxBinsByVoxel around =
+        SettleCertified(near, selected, uncertified, context.FreezeNearBorders, settled);
+      if (around.Empty())
+        return;
+      // Every cell near such a face stays as it is, so that whatever certified
+      // it in the initial mesh still does (a merge rebuilds only the star of
+      // the vertex it removes, inside that star). Freezing only the faces of
+      // its sides left 3 % more cells on digimouse: the volume around them
+      // was merged against a fixed fine interface.
+      // Cells lie in their leaves until merged, and none is merged yet: only
+      // the cells of leaves near such a face are tested, each by its own box
+      // (a cell whose box misses the face's neighbourhood holds no mesh face
+      // within h(I,M) of it).
+      for (std::size_t i = first; i < last; ++i)
+        if (around.Meets(leaves[i].Box))
+          FreezeCellsNear(mesh, around, i == first ? 0 : cellEnd[i - first - 1], cellEnd[i - first], depth, frozen);
+    };
+    if (isWhole)
+      scope.FreezeNear = nullptr; // one block certifies every image face, or the input is wrong
+    clock.Finish("block plan");
+
+    EditableMesh block(std::move(filled), context.BoxLow, context.BoxHigh);
+    const double share = blocksShare * double(last - first) / double(leaves.size());
+    DecimateInScope(image, context.Boundary, block, decimation, scope, observer, start,
+      isWhole ? 0.95 - start : share, part.Counts, clock);
+    if (isWhole)
+    {
+      whole.Counts = part.Counts;
+      FinishDecimation(block, whole);
+      clock.Finish("decimation output");
+      part.Timings = std::move(timings);
+      return { last, true };
+    }
+    // scope.Frozen now holds every vertex the block froze, its border's included.
+    assembly.Add(block, scope.Frozen);
+    first = last;
+    if (partGoesOn() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
+    {
+      // The part's blocks so far cover the keys [part's first, End): what
+      // they froze at the borders between them can be resolved now, so that
+      // the assembled mesh is the output so far and one frontier, not every
+      // block's border zone. Doubling the threshold each time keeps the
+      // passes' merges within about twice the last pass's; each pass also
+      // re-certifies the image faces of all blocks so far (Cassini 1024: 7
+      // passes, 71 of 577 s).
+      part.LargestAssembledCells = std::max(part.LargestAssembledCells, assembly.Mesh.NumberOfCells());
+      const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
+      const std::size_t passFrom = timings.size();
+      DecimateAssembled(context, LeafRunKeys(leaves, partFirst, first, dimension, depth), decimation, settled,
+        assembly, observer, at, part.Counts, clock);
+      PrefixStages(timings, passFrom, "border passes: ");
+      ++part.BorderPasses;
+      nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
+    }
+  }
+  part.LargestAssembledCells = std::max(part.LargestAssembledCells, assembly.Mesh.NumberOfCells());
+  part.Timings = Coalesced(timings);
+  assembly.MoveTo(part);
+  return { first, false };
+}
+
+/// The leaf where each part starts, then leaves.size(): the blocks cut as
+/// StreamPart cuts them (a block closes once its leaves made BlockCells
+/// cells), PartBlocks to a part, so that every process finds the same parts.
+/// It fills every leaf once, one block at a time, and keeps nothing.
+std::vector<std::size_t> PartStarts(const LabelImage& image, const std::vector<OctreeLeaf>& leaves,
+  const StreamingParameters& streaming)
+{
+  std::vector<std::size_t> starts{ 0 };
+  if (streaming.PartBlocks != 0 && streaming.BlockCells != 0)
+  {
+    std::size_t blocks = 0;
+    for (std::size_t first = 0; first < leaves.size();)
+    {
+      MeshAssembler assembler(image.Dimension());
+      while (first < leaves.size() && assembler.NumberOfCells() < streaming.BlockCells)
+        FillLeaf(image, leaves[first++], assembler);
+      if (++blocks % streaming.PartBlocks == 0 && first < leaves.size())
+        starts.push_back(first);
+    }
+  }
+  starts.push_back(leaves.size());
+  return starts;
+}
+
+/// The process that meshes part `part` of `parts`: consecutive parts to a
+/// process, each part to the rank its middle falls to, so that when they do
+/// not divide evenly rank 0, which also joins them, takes fewer. Part 0 is
+/// always rank 0's (it may be the whole mesh).
+int OwnerOf(std::size_t part, std::size_t parts, int ranks)
+{
+  if (part == 0)
+    return 0;
+  return static_cast<int>((2 * part + 1) * static_cast<std::size_t>(ranks) / (2 * parts));
+}
+
+std::string Reason(std::exception_ptr error)
+{
+  try
+  {
+    std::rethrow_exception(error);
+  }
+  catch (const AbortRequested&)
+  {
+    return "stopped";
+  }
+  catch (const std::bad_alloc&)
+  {
+    return "out of memory";
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  catch (...)
+  {
+    return "an unknown error";
+  }
+}
+
+/// A rank other than 0: its parts, meshed and sent to rank 0 in order.
+void SendParts(const PieceContext& context, const std::vector<OctreeLeaf>& leaves,
+  const std::vector<std::size_t>& starts, const DecimationParameters& decimation,
+  const StreamingParameters& streaming, PartExchange& exchange)
+{
+  const std::size_t parts = starts.size() - 1;
+  for (std::size_t p = 0; p < parts; ++p)
+  {
+    if (OwnerOf(p, parts, exchange.Ranks()) != exchange.Rank())
+      continue;
+    PartMessage message;
+    DecimationResult unused;
+    const PartRun run = StreamPart(context, leaves, starts[p], decimation, streaming, {}, message.Part, unused);
+    if (run.Whole || run.End != starts[p + 1])
+      throw std::logic_error("a part ended at another leaf than the plan's");
+    exchange.Send(PackPartMessage(message));
+  }
+}
+
+/// A rank other than 0 that failed: rank 0 takes this in place of the next
+/// part it expects from it.
+void SendFailure(PartExchange& exchange, std::exception_ptr error)
+{
+  PartMessage failure;
+  failure.Failed = true;
+  failure.Reason = Reason(error);
+  exchange.Send(PackPartMessage(failure));
+}
+
+void AddPartCounts(StreamedResult& result, const MeshPart& part, std::vector<StageTiming>& timings)
+{
+  DecimationCounts& total = result.Decimated.Counts;
+  AddMergeCounts(total, part.Counts);
+  total.CellsBefore += part.Counts.CellsBefore;
+  total.VerticesBefore += part.Counts.VerticesBefore;
+  total.FrozenVertices += part.Counts.FrozenVertices;
+  StreamingCounts& s = result.Streaming;
+  ++s.Parts;
+  s.Blocks += part.Blocks;
+  s.LargestBlockCells = std::max(s.LargestBlockCells, part.LargestBlockCells);
+  s.ForegroundCellsBefore += part.ForegroundCellsBefore;
+  s.BorderPasses += part.BorderPasses;
+  s.LargestAssembledCells = std::max(s.LargestAssembledCells, part.LargestAssembledCells);
+  timings.insert(timings.end(), part.Timings.begin(), part.Timings.end());
+}
+
+/// MeshAndDecimate, whose failures on a rank other than 0 it reports to rank 0.
+StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
+  PartExchange* exchange)
 {
   const int dimension = image.Dimension();
   ValidateDecimationParameters(dimension, decimation);
@@ -319,7 +588,8 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   std::vector<StageTiming> timings;
   StageClock clock(timings);
 
-  // The octree over the whole image: small beside the mesh (one record per leaf).
+  // The octree over the whole image: small beside the mesh (one record per
+  // leaf). Every process refines it, and finds the same.
   const ProgressObserver octreeProgress{ [&](const std::string& stage, double f) {
     return observer.Report(stage, 0.25 * f);
   } };
@@ -338,103 +608,101 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   const Lattice boxLow{ -1, -1, dimension == 2 ? 0 : -1 };
   const Lattice boxHigh{ extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 };
   const PieceContext pieces{ image, boundary, near, octree.Depth, boxLow, boxHigh, streaming.FreezeNearBorders };
+  const int ranks = exchange != nullptr ? exchange->Ranks() : 1;
+  result.Streaming.Processes = static_cast<std::size_t>(ranks);
+  // One process finds the parts as it goes; several need them beforehand.
+  const std::vector<std::size_t> starts = ranks > 1 ? PartStarts(image, leaves, streaming) : std::vector<std::size_t>{};
   clock.Finish("block plan");
+  if (ranks > 1 && exchange->Rank() != 0)
+  {
+    SendParts(pieces, leaves, starts, decimation, streaming, *exchange);
+    result.HoldsMesh = false;
+    out.Timings = Coalesced(timings);
+    return result;
+  }
 
+  // Rank 0: the parts, its own meshed here and the others' received, joined
+  // in order, with border passes between them as between blocks.
   BlockAssembly assembly(dimension);
   const std::size_t minimumBorderPass = std::max<std::size_t>(1, streaming.BlockCells / 4);
   std::size_t nextBorderPass = minimumBorderPass;
-  // Per image face: certified by a finished block (its certificate lies in
-  // cells no later block changes), or selected for the block under way.
-  std::vector<std::uint8_t> settled(near.size(), 0), selected(near.size(), 0);
-  const double blocksStart = 0.15, blocksShare = 0.7;
-  for (std::size_t first = 0; first < leaves.size();)
+  std::vector<std::uint8_t> settled(near.size(), 0);
+  std::size_t pending = 0; // the first part not yet taken
+  std::vector<std::uint8_t> failed(static_cast<std::size_t>(ranks), 0);
+  try
   {
-    ReleaseFreedMemory(); // the previous block's and border pass's
-    // Fill leaves until the block holds BlockCells cells.
-    const double start = blocksStart + blocksShare * double(first) / double(leaves.size());
-    if (!observer.Report("fill", start))
-      throw AbortRequested{};
-    MeshAssembler assembler(dimension);
-    std::vector<std::size_t> cellEnd; // per leaf of the block
-    std::size_t last = first;
-    while (last < leaves.size() && (streaming.BlockCells == 0 || assembler.NumberOfCells() < streaming.BlockCells))
+    for (std::size_t first = 0; first < leaves.size(); ++pending)
     {
-      FillLeaf(image, leaves[last++], assembler);
-      cellEnd.push_back(assembler.NumberOfCells());
+      MeshPart part;
+      const int owner = ranks > 1 ? OwnerOf(pending, starts.size() - 1, ranks) : 0;
+      if (owner == 0)
+      {
+        const PartRun run = StreamPart(pieces, leaves, first, decimation, streaming, observer, part, out);
+        if (run.Whole)
+        {
+          result.Streaming.Parts = 1;
+          result.Streaming.Blocks = 1;
+          result.Streaming.LargestBlockCells = part.LargestBlockCells;
+          result.Streaming.ForegroundCellsBefore = part.ForegroundCellsBefore;
+          timings.insert(timings.end(), part.Timings.begin(), part.Timings.end());
+          out.Timings = Coalesced(timings);
+          observer.Report("decimation done", 1.0);
+          return result;
+        }
+        if (ranks > 1 && run.End != starts[pending + 1])
+          throw std::logic_error("a part ended at another leaf than the plan's");
+        first = run.End;
+        clock.Restart(); // the part's stages are in its own timings
+      }
+      else
+      {
+        PartMessage message = UnpackPartMessage(exchange->Receive(owner));
+        if (message.Failed)
+        {
+          failed[static_cast<std::size_t>(owner)] = 1;
+          throw std::runtime_error("process " + std::to_string(owner) + " of " + std::to_string(ranks) + ": " +
+            message.Reason);
+        }
+        part = std::move(message.Part);
+        first = starts[pending + 1];
+        clock.Finish("waiting for other processes");
+      }
+      AddPartCounts(result, part, timings);
+      assembly.Add(part);
+      part = MeshPart{};
+      if (first < leaves.size() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
+      {
+        ReleaseFreedMemory();
+        result.Streaming.LargestAssembledCells =
+          std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
+        const std::size_t passFrom = timings.size();
+        DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, octree.Depth), decimation, settled,
+          assembly, observer, 0.15 + 0.7 * double(first) / double(leaves.size()), out.Counts, clock);
+        PrefixStages(timings, passFrom, "joining parts: ");
+        ++result.Streaming.BorderPasses;
+        nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
+      }
     }
-    const bool whole = first == 0 && last == leaves.size();
-    const KeyRange keys = LeafRunKeys(leaves, first, last, dimension, octree.Depth);
-    ++result.Streaming.Blocks;
-    result.Streaming.LargestBlockCells = std::max(result.Streaming.LargestBlockCells, assembler.NumberOfCells());
-    clock.Finish("fill");
-
-    // The block certifies the image faces near it that no earlier block
-    // did; around those it cannot (their certificates lie beyond its
-    // border), its cells are frozen.
-    for (std::size_t f = 0; f < near.size(); ++f)
-      selected[f] = !settled[f] && keys.MayMeet(near[f]);
-    SimplexMesh filled = assembler.Release();
-    result.Streaming.ForegroundCellsBefore += static_cast<std::size_t>(
-      std::count_if(filled.Materials.begin(), filled.Materials.end(), [](std::int32_t m) { return m != 0; }));
-    DecimationScope scope;
-    scope.ImageFaces = &selected;
-    scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
-                         std::vector<std::uint8_t>& frozen) {
-      const BoxBinsByVoxel around =
-        SettleCertified(near, selected, uncertified, streaming.FreezeNearBorders, settled);
-      if (around.Empty())
-        return;
-      // Every cell near such a face stays as it is, so that whatever certified
-      // it in the initial mesh still does (a merge rebuilds only the star of
-      // the vertex it removes, inside that star). Freezing only the faces of
-      // its sides left 3 % more cells on digimouse: the volume around them
-      // was merged against a fixed fine interface.
-      // Cells lie in their leaves until merged, and none is merged yet: only
-      // the cells of leaves near such a face are tested, each by its own box
-      // (a cell whose box misses the face's neighbourhood holds no mesh face
-      // within h(I,M) of it).
-      for (std::size_t i = first; i < last; ++i)
-        if (around.Meets(leaves[i].Box))
-          FreezeCellsNear(mesh, around, i == first ? 0 : cellEnd[i - first - 1], cellEnd[i - first], octree.Depth,
-            frozen);
-    };
-    if (whole)
-      scope.FreezeNear = nullptr; // one block certifies every image face, or the input is wrong
-    clock.Finish("block plan");
-
-    EditableMesh block(std::move(filled), boxLow, boxHigh);
-    const double share = blocksShare * double(last - first) / double(leaves.size());
-    DecimateInScope(image, boundary, block, decimation, scope, observer, start, whole ? 0.95 - start : share,
-      out.Counts, clock);
-    if (whole)
+  }
+  catch (...)
+  {
+    // The other processes send every part they own (or one failure): take
+    // them all, so that none waits on a send for ever.
+    for (std::size_t p = pending + 1; ranks > 1 && p + 1 < starts.size(); ++p)
     {
-      FinishDecimation(block, out);
-      clock.Finish("decimation output");
-      out.Timings = Coalesced(timings);
-      observer.Report("decimation done", 1.0);
-      return result;
+      const int owner = OwnerOf(p, starts.size() - 1, ranks);
+      if (owner == 0 || failed[static_cast<std::size_t>(owner)])
+        continue;
+      try
+      {
+        failed[static_cast<std::size_t>(owner)] = UnpackPartMessage(exchange->Receive(owner)).Failed;
+      }
+      catch (const std::exception&)
+      {
+        failed[static_cast<std::size_t>(owner)] = 1;
+      }
     }
-    // scope.Frozen now holds every vertex the block froze, its border's included.
-    assembly.Add(block, scope.Frozen);
-    first = last;
-    if (first < leaves.size() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
-    {
-      // The blocks so far cover the keys [0, End): what they froze at the
-      // borders between them can be resolved now, so that the assembled mesh
-      // is the output so far and one frontier, not every block's border zone.
-      // Doubling the threshold each time keeps the passes' merges within
-      // about twice the last pass's; each pass also re-certifies the image
-      // faces of all blocks so far (Cassini 1024: 7 passes, 71 of 577 s).
-      result.Streaming.LargestAssembledCells =
-        std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
-      const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
-      const std::size_t passFrom = timings.size();
-      DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, octree.Depth), decimation, settled,
-        assembly, observer, at, out.Counts, clock);
-      PrefixStages(timings, passFrom, "border passes: ");
-      ++result.Streaming.BorderPasses;
-      nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
-    }
+    throw;
   }
 
   // The assembled mesh, once more from what the blocks froze: its setup
@@ -459,6 +727,26 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   out.Timings = Coalesced(timings);
   observer.Report("decimation done", 1.0);
   return result;
+}
+
+} // namespace
+
+StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
+  PartExchange* exchange)
+{
+  if (exchange == nullptr || exchange->Ranks() < 2 || exchange->Rank() == 0)
+    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange);
+  try
+  {
+    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange);
+  }
+  catch (...)
+  {
+    // Whatever stopped this process (bad input, no memory, a stop), rank 0 must hear of it.
+    SendFailure(*exchange, std::current_exception());
+    throw;
+  }
 }
 
 } // namespace labelmesher

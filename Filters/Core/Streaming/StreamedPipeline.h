@@ -33,9 +33,16 @@
  *    certifies every image face near it, settled or not, before merging;
  *  - the last pass re-checks the assembled mesh from scratch (angles, h(M,I)
  *    of every face, a certificate for every image face) before merging.
- * One block gives exactly DecimateMesh(MeshLabelImage(...)). The blocks
- * depend on the image and BlockCells only, so the mesh is the same on any
- * number of threads; with another BlockCells it differs (borders elsewhere).
+ * One block gives exactly DecimateMesh(MeshLabelImage(...)).
+ *
+ * Parts: the blocks are grouped PartBlocks to a part, the unit one process
+ * takes under MPI (PartExchange.h). A part knows nothing of the others: its
+ * blocks settle image faces among themselves only, and its border passes
+ * cover its own keys. Rank 0 joins the parts in order, with border passes
+ * between them by the blocks' rule, then runs the last pass. The blocks and
+ * parts depend on the image, BlockCells and PartBlocks only, so the mesh is
+ * the same on any number of threads and of processes; with another BlockCells
+ * or PartBlocks it differs (borders elsewhere).
  */
 
 #include "Decimation/MeshDecimator.h"
@@ -48,8 +55,12 @@
 namespace labelmesher
 {
 
+class PartExchange;
+
 /// Initial cells per block by default: about 150 MB of working memory.
 constexpr std::size_t kDefaultBlockCells = 1000000;
+/// Blocks per part by default.
+constexpr std::size_t kDefaultPartBlocks = 2;
 
 struct StreamingParameters
 {
@@ -64,11 +75,16 @@ struct StreamingParameters
   /// For tests only: off, nothing is frozen near image faces that cross a
   /// block border (unsound), to show that the tests catch it.
   bool FreezeNearBorders = true;
+  /// Blocks per part (0: one part, every block): a part is meshed by one
+  /// process, so parts are what several processes share out.
+  std::size_t PartBlocks = kDefaultPartBlocks;
 };
 
 struct StreamingCounts
 {
   std::size_t Leaves = 0;
+  std::size_t Parts = 0;
+  std::size_t Processes = 1; ///< that meshed parts (the exchange's ranks)
   std::size_t Blocks = 0;
   std::size_t LargestBlockCells = 0;  ///< initial cells of the largest block
   std::size_t ForegroundCellsBefore = 0; ///< initial cells of a label other than 0
@@ -82,14 +98,23 @@ struct StreamedResult
 {
   DecimationResult Decimated;
   StreamingCounts Streaming;
+  /// False on the processes other than rank 0 of a run shared out over
+  /// several: they sent their parts to rank 0 and hold no mesh.
+  bool HoldsMesh = true;
 };
 
 /// Meshes `image` with `mesher` and decimates with `decimation` block by
 /// block. Throws std::invalid_argument for bad input or parameters (as
 /// MeshLabelImage and DecimateMesh) and AbortRequested when `observer` says stop.
+/// With `exchange` of more than one rank, every process passes the whole
+/// image and the same parameters; each meshes the parts it owns (consecutive
+/// parts to a process), rank 0 receives the others' and returns the mesh, the
+/// others return none (HoldsMesh false). A process that fails tells rank 0,
+/// which throws std::runtime_error naming it ("process R of N: reason")
+/// after taking every part still on its way.
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming = {},
-  const ProgressObserver& observer = {});
+  const ProgressObserver& observer = {}, PartExchange* exchange = nullptr);
 
 } // namespace labelmesher
 

@@ -37,6 +37,8 @@ public:
     Timings.push_back({ stage, std::chrono::duration<double>(now - Start).count() });
     Start = now;
   }
+  /// The next stage starts now: the time since the last Finish was counted elsewhere.
+  void Restart() { Start = std::chrono::steady_clock::now(); }
 
 private:
   std::vector<StageTiming>& Timings;

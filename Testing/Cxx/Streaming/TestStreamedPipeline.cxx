@@ -7,7 +7,10 @@
 //     measurements of MeshGuarantees.h) on smooth, box and thin-feature
 //     random images, 2D and 3D;
 //   - with a merge check switched off, the same tests find broken guarantees;
-//   - the mesh is the same on 1, 2, 3 and 8 threads.
+//   - the mesh is the same on 1, 2, 3 and 8 threads, and on 1, 2, 3 and 8
+//     processes (ranks run one after another in this process, their parts
+//     passed as bytes); a process that fails makes rank 0 fail naming it,
+//     after taking every message still on its way.
 // Block keys (BlockPlan.h): a box of voxels lies in a run of leaves exactly
 // when the keys of its corners do.
 
@@ -16,6 +19,7 @@
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "Streaming/BlockPlan.h"
+#include "Streaming/PartExchange.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/ParallelChunks.h"
 #include "Support/StageClock.h"
@@ -23,7 +27,10 @@
 
 #include <gtest/gtest.h>
 
+#include <deque>
+#include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace labelmesher
 {
@@ -175,6 +182,134 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
     EXPECT_TRUE(SameMesh(reference.Decimated.Mesh, other.Decimated.Mesh)) << threads << " threads";
   }
   SetThreadLimit(0);
+}
+
+/// Ranks run one after another in this process: each rank other than 0
+/// queues its messages, then rank 0 takes them.
+class QueuedExchange final : public PartExchange
+{
+public:
+  QueuedExchange(int rank, int ranks, std::map<int, std::deque<std::vector<char>>>& queues)
+    : RankOfThis(rank)
+    , Size(ranks)
+    , Queues(queues)
+  {
+  }
+  int Rank() const override { return RankOfThis; }
+  int Ranks() const override { return Size; }
+  void Send(const std::vector<char>& message) override { Queues[RankOfThis].push_back(message); }
+  std::vector<char> Receive(int rank) override
+  {
+    auto& queue = Queues[rank];
+    if (queue.empty())
+      throw std::logic_error("rank 0 waits for a message rank " + std::to_string(rank) + " never sends");
+    std::vector<char> message = std::move(queue.front());
+    queue.pop_front();
+    return message;
+  }
+
+private:
+  int RankOfThis, Size;
+  std::map<int, std::deque<std::vector<char>>>& Queues;
+};
+
+/// The pipeline on `ranks` processes; rank `failing` (if any) is stopped by its progress observer.
+StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1)
+{
+  std::map<int, std::deque<std::vector<char>>> queues;
+  const ProgressObserver stop{ [](const std::string&, double) { return false; } };
+  for (int rank = ranks - 1; rank > 0; --rank)
+  {
+    QueuedExchange exchange(rank, ranks, queues);
+    if (rank == failing)
+    {
+      EXPECT_THROW(MeshAndDecimate(image, mesher, decimation, streaming, stop, &exchange), AbortRequested);
+      continue;
+    }
+    const StreamedResult other = MeshAndDecimate(image, mesher, decimation, streaming, {}, &exchange);
+    EXPECT_FALSE(other.HoldsMesh);
+    EXPECT_TRUE(other.Decimated.Mesh.Points.empty());
+  }
+  QueuedExchange root(0, ranks, queues);
+  struct TakesEverything
+  {
+    std::map<int, std::deque<std::vector<char>>>& Queues;
+    ~TakesEverything()
+    {
+      for (const auto& [rank, queue] : Queues)
+        EXPECT_TRUE(queue.empty()) << "rank 0 left a message of rank " << rank;
+    }
+  } check{ queues };
+  return MeshAndDecimate(image, mesher, decimation, streaming, {}, &root);
+}
+
+TEST(StreamedPipeline, SameMeshOnAnyNumberOfProcesses)
+{
+  for (int dimension : { 2, 3 })
+  {
+    const std::uint64_t seed = dimension == 2 ? 912002 : 912003;
+    const auto random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, mesher);
+    StreamingParameters streaming;
+    streaming.BlockCells = dimension == 2 ? 40 : 400;
+    streaming.PartBlocks = 2;
+    const StreamedResult one = MeshAndDecimate(random.Image, mesher, decimation, streaming);
+    ASSERT_GE(one.Streaming.Parts, 4u) << "dimension " << dimension;
+    EXPECT_GT(one.Streaming.Blocks, one.Streaming.Parts);
+    const auto problems = testing::ViolatedStreamedGuarantees(random.Image, mesher, decimation, streaming);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+    for (int ranks : { 1, 2, 3, 8 })
+    {
+      const StreamedResult shared = MeshOnRanks(random.Image, mesher, decimation, streaming, ranks);
+      EXPECT_TRUE(shared.HoldsMesh);
+      EXPECT_TRUE(SameMesh(one.Decimated.Mesh, shared.Decimated.Mesh)) << ranks << " processes, dimension " << dimension;
+      EXPECT_EQ(shared.Streaming.Parts, one.Streaming.Parts);
+      EXPECT_EQ(shared.Streaming.Blocks, one.Streaming.Blocks);
+      EXPECT_EQ(shared.Decimated.Counts.Merges, one.Decimated.Counts.Merges);
+    }
+  }
+}
+
+TEST(StreamedPipeline, OnePartIsTheBlocksOfOneProcess)
+{
+  // PartBlocks 0: every block in one part, the pipeline as before parts
+  // existed; more processes than parts leave the others idle.
+  const auto random = testing::GenerateRandomLabelImageWithDescription(912005, 3);
+  const MesherParameters mesher = testing::DrawDistanceBounds(912005);
+  const DecimationParameters decimation;
+  StreamingParameters streaming;
+  streaming.BlockCells = 400;
+  streaming.PartBlocks = 0;
+  const StreamedResult one = MeshAndDecimate(random.Image, mesher, decimation, streaming);
+  EXPECT_EQ(one.Streaming.Parts, 1u);
+  ASSERT_GT(one.Streaming.Blocks, 2u);
+  EXPECT_TRUE(SameMesh(one.Decimated.Mesh, MeshOnRanks(random.Image, mesher, decimation, streaming, 3).Decimated.Mesh));
+  streaming.PartBlocks = 1000;
+  EXPECT_TRUE(SameMesh(one.Decimated.Mesh, MeshAndDecimate(random.Image, mesher, decimation, streaming).Decimated.Mesh));
+}
+
+TEST(StreamedPipeline, AProcessThatFailsIsNamedByRankZero)
+{
+  const auto random = testing::GenerateRandomLabelImageWithDescription(912007, 3);
+  const MesherParameters mesher = testing::DrawDistanceBounds(912007);
+  const DecimationParameters decimation;
+  StreamingParameters streaming;
+  streaming.BlockCells = 300;
+  streaming.PartBlocks = 1;
+  for (int failing : { 1, 2 })
+  {
+    try
+    {
+      MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing);
+      ADD_FAILURE() << "rank 0 did not fail with process " << failing;
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped");
+    }
+  }
 }
 
 TEST(StreamedPipeline, BorderPassesKeepTheAssembledBlocksSmall)

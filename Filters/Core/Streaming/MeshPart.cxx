@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// A part of the streamed pipeline as bytes: fixed-width fields, lengths first.
+#include "Streaming/MeshPart.h"
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+
+namespace labelmesher
+{
+namespace
+{
+
+constexpr std::uint32_t kMagic = 0x4c4d5031; // "LMP1"
+
+class Writer
+{
+public:
+  template <typename T>
+  void Value(const T& v)
+  {
+    const char* p = reinterpret_cast<const char*>(&v);
+    Bytes.insert(Bytes.end(), p, p + sizeof(T));
+  }
+  template <typename T>
+  void Array(const std::vector<T>& v)
+  {
+    Value(static_cast<std::uint64_t>(v.size()));
+    const char* p = reinterpret_cast<const char*>(v.data());
+    Bytes.insert(Bytes.end(), p, p + v.size() * sizeof(T));
+  }
+  void Text(const std::string& s) { Array(std::vector<char>(s.begin(), s.end())); }
+  std::vector<char> Bytes;
+};
+
+class Reader
+{
+public:
+  explicit Reader(const std::vector<char>& bytes)
+    : Bytes(bytes)
+  {
+  }
+  template <typename T>
+  T Value()
+  {
+    T v;
+    Take(&v, sizeof(T));
+    return v;
+  }
+  template <typename T>
+  std::vector<T> Array()
+  {
+    const auto n = Value<std::uint64_t>();
+    if (n > (Bytes.size() - At) / sizeof(T))
+      throw std::runtime_error("a mesh part's message is cut short");
+    std::vector<T> v(static_cast<std::size_t>(n));
+    Take(v.data(), v.size() * sizeof(T));
+    return v;
+  }
+  std::string Text()
+  {
+    const std::vector<char> c = Array<char>();
+    return std::string(c.begin(), c.end());
+  }
+  bool AtEnd() const { return At == Bytes.size(); }
+
+private:
+  void Take(void* to, std::size_t n)
+  {
+    if (n > Bytes.size() - At)
+      throw std::runtime_error("a mesh part's message is cut short");
+    if (n > 0)
+      std::memcpy(to, Bytes.data() + At, n);
+    At += n;
+  }
+  const std::vector<char>& Bytes;
+  std::size_t At = 0;
+};
+
+void WriteCounts(Writer& w, const DecimationCounts& c)
+{
+  for (std::size_t v : { c.CellsBefore, c.CellsAfter, c.VerticesBefore, c.VerticesAfter, c.Offers, c.Merges,
+         c.RejectedByQuality, c.RejectedByTopology, c.RejectedByFidelity, c.Relocations, c.FrozenVertices })
+    w.Value(static_cast<std::uint64_t>(v));
+}
+
+DecimationCounts ReadCounts(Reader& r)
+{
+  DecimationCounts c;
+  for (std::size_t* v : { &c.CellsBefore, &c.CellsAfter, &c.VerticesBefore, &c.VerticesAfter, &c.Offers, &c.Merges,
+         &c.RejectedByQuality, &c.RejectedByTopology, &c.RejectedByFidelity, &c.Relocations, &c.FrozenVertices })
+    *v = static_cast<std::size_t>(r.Value<std::uint64_t>());
+  return c;
+}
+
+} // namespace
+
+std::vector<char> PackPartMessage(const PartMessage& message)
+{
+  Writer w;
+  w.Value(kMagic);
+  w.Value(static_cast<std::uint8_t>(message.Failed));
+  if (message.Failed)
+  {
+    w.Text(message.Reason);
+    return std::move(w.Bytes);
+  }
+  const MeshPart& p = message.Part;
+  w.Value(static_cast<std::int32_t>(p.Mesh.Dimension));
+  w.Array(p.Mesh.Points);
+  w.Array(p.Mesh.Connectivity);
+  w.Array(p.Mesh.Materials);
+  w.Array(p.Offered);
+  w.Array(p.Border);
+  WriteCounts(w, p.Counts);
+  for (std::size_t v : { p.Blocks, p.LargestBlockCells, p.ForegroundCellsBefore, p.BorderPasses,
+         p.LargestAssembledCells })
+    w.Value(static_cast<std::uint64_t>(v));
+  w.Value(static_cast<std::uint64_t>(p.Timings.size()));
+  for (const StageTiming& t : p.Timings)
+  {
+    w.Text(t.Stage);
+    w.Value(t.Seconds);
+  }
+  return std::move(w.Bytes);
+}
+
+PartMessage UnpackPartMessage(const std::vector<char>& bytes)
+{
+  Reader r(bytes);
+  if (r.Value<std::uint32_t>() != kMagic)
+    throw std::runtime_error("a mesh part's message does not start as one");
+  PartMessage message;
+  message.Failed = r.Value<std::uint8_t>() != 0;
+  if (message.Failed)
+  {
+    message.Reason = r.Text();
+    return message;
+  }
+  MeshPart& p = message.Part;
+  p.Mesh.Dimension = r.Value<std::int32_t>();
+  if (p.Mesh.Dimension != 2 && p.Mesh.Dimension != 3)
+    throw std::runtime_error("a mesh part's message names no dimension");
+  p.Mesh.Points = r.Array<Point3>();
+  p.Mesh.Connectivity = r.Array<std::int64_t>();
+  p.Mesh.Materials = r.Array<std::int32_t>();
+  p.Offered = r.Array<std::uint8_t>();
+  p.Border = r.Array<std::uint8_t>();
+  if (p.Mesh.Connectivity.size() != p.Mesh.Materials.size() * static_cast<std::size_t>(p.Mesh.VerticesPerCell()) ||
+    p.Offered.size() != p.Mesh.Points.size() || p.Border.size() != p.Mesh.Points.size())
+    throw std::runtime_error("a mesh part's message has arrays of different lengths");
+  for (std::int64_t v : p.Mesh.Connectivity)
+    if (v < 0 || static_cast<std::uint64_t>(v) >= p.Mesh.Points.size())
+      throw std::runtime_error("a mesh part's message names a vertex it does not hold");
+  p.Counts = ReadCounts(r);
+  for (std::size_t* v : { &p.Blocks, &p.LargestBlockCells, &p.ForegroundCellsBefore, &p.BorderPasses,
+         &p.LargestAssembledCells })
+    *v = static_cast<std::size_t>(r.Value<std::uint64_t>());
+  const auto timings = r.Value<std::uint64_t>();
+  for (std::uint64_t t = 0; t < timings; ++t)
+  {
+    StageTiming timing;
+    timing.Stage = r.Text();
+    timing.Seconds = r.Value<double>();
+    p.Timings.push_back(std::move(timing));
+  }
+  if (!r.AtEnd())
+    throw std::runtime_error("a mesh part's message runs on past its end");
+  return message;
+}
+
+} // namespace labelmesher

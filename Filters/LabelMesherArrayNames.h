@@ -78,6 +78,8 @@ inline constexpr char FrozenVertices[] = "FrozenVertices";
 // vtkLabelMesher (block-streamed)
 inline constexpr char Blocks[] = "Blocks";                       ///< blocks the run was cut into
 inline constexpr char LargestBlockCells[] = "LargestBlockCells"; ///< initial cells of the largest block
+inline constexpr char Parts[] = "Parts";                         ///< parts the blocks were grouped into
+inline constexpr char Processes[] = "Processes";                 ///< processes the parts were shared out over
 inline constexpr char AssembledCells[] = "AssembledCells";       ///< cells entering the last pass (0: one block)
 inline constexpr char BorderPasses[] = "BorderPasses";           ///< border passes between blocks
 inline constexpr char LargestAssembledCells[] = "LargestAssembledCells"; ///< most cells of the assembled blocks

@@ -5,7 +5,9 @@
 
 #include "FilterStage.h"
 #include "FilterSupport.h"
+#include "MPIPartExchange.h"
 #include "MPIStartup.h"
+#include "Streaming/PartExchange.h"
 #include "LabelImageConversion.h"
 #include "LabelMesherArrayNames.h"
 #include "MemoryBudget.h"
@@ -26,6 +28,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <memory>
 #include <exception>
 #include <new>
 #include <string>
@@ -343,27 +346,36 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
 {
   labelmesher::ImagePlacement placement;
   labelmesher::LabelImage image;
-  std::string error;
-  if (!labelmesher::ConvertLabelImage(input, labels, image, placement, error))
-  {
-    vtkErrorMacro(<< error << ".");
-    return false;
-  }
+  std::string problem;
   const auto blockCells = static_cast<std::uint64_t>(std::max<vtkIdType>(0, this->BlockCells));
-  labelmesher::MemoryEstimate estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
-  const bool quadratic3D = this->Order == 2 && image.Dimension() == 3;
-  if (quadratic3D)
+  labelmesher::MemoryEstimate estimate;
+  labelmesher::MemoryBudget budget;
+  const bool quadratic3D = this->Order == 2 && GetImageDimension(input) == 3;
+  if (labelmesher::ConvertLabelImage(input, labels, image, placement, problem))
   {
-    estimate = labelmesher::WithQuadraticStage(estimate, this->MeasureOutput);
+    estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
+    if (quadratic3D)
+    {
+      estimate = labelmesher::WithQuadraticStage(estimate, this->MeasureOutput);
+    }
+    budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
+    problem = labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);
   }
-  const labelmesher::MemoryBudget budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
-  const std::string refusal =
-    labelmesher::RefuseIfTooLarge(estimate.RunBytes, labelmesher::DescribeEstimate(estimate), budget);
-  if (!refusal.empty())
+  // Under mpirun the application has started MPI; a plain process starts it only once the run
+  // is known to fit (its start takes address space, MemoryBudget.h).
+  const std::unique_ptr<labelmesher::PartExchange> exchange =
+    this->Distributed && labelmesher::MPIRunning() ? labelmesher::WorldPartExchange() : nullptr;
+  if (exchange)
   {
-    vtkErrorMacro(<< refusal << ".");
+    // Every process goes on or none does: rank 0 would wait for the parts of one that stopped.
+    problem = labelmesher::FirstFailure(problem);
+  }
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem << ".");
     return false;
   }
+  labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
 
   labelmesher::MesherParameters mesher;
   mesher.ImageToMeshDistance = this->ImageToMeshDistance;
@@ -375,6 +387,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   decimation.RelocateInteriorVertices = this->RelocateInteriorVertices;
   labelmesher::StreamingParameters streaming;
   streaming.BlockCells = blockCells;
+  streaming.PartBlocks = static_cast<std::size_t>(std::max<vtkIdType>(0, this->PartBlocks));
 
   // Quadratic cells (and their measurement) take a share of the run after the decimation.
   // In order: meshing and decimating, the quadratic cells (Order 2), measuring the linear mesh.
@@ -382,10 +395,10 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   const double runShare = (share - quadraticShare) * (this->MeasureOutput ? 0.8 : 1.0);
   const double measureStart = runShare + quadraticShare;
   labelmesher::StreamedResult result;
-  labelmesher::StartMPI(); // p4est's forest needs MPI; starting it is the application's (MPIStartup.h)
   try
   {
-    result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, runShare));
+    result = labelmesher::MeshAndDecimate(
+      image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, runShare), exchange.get());
   }
   catch (const labelmesher::AbortRequested&)
   {
@@ -405,6 +418,10 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
     return false;
   }
 
+  if (!result.HoldsMesh)
+  {
+    return false; // a process other than rank 0 of a distributed run: its parts went to rank 0
+  }
   labelmesher::DecimationResult& decimated = result.Decimated;
   if (quadratic3D && !MakeQuadratic(this, image, decimated.Mesh, placement, quadratic, runShare, quadraticShare, decimated.Timings))
   {
@@ -425,6 +442,8 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   labelmesher::AddScalarField(fd, arrays::InterfaceFaces, static_cast<double>(estimate.InterfaceFaces));
   labelmesher::AddScalarField(fd, arrays::Blocks, static_cast<double>(result.Streaming.Blocks));
   labelmesher::AddScalarField(fd, arrays::LargestBlockCells, static_cast<double>(result.Streaming.LargestBlockCells));
+  labelmesher::AddScalarField(fd, arrays::Parts, static_cast<double>(result.Streaming.Parts));
+  labelmesher::AddScalarField(fd, arrays::Processes, static_cast<double>(result.Streaming.Processes));
   labelmesher::AddScalarField(fd, arrays::AssembledCells, static_cast<double>(result.Streaming.AssembledCells));
   labelmesher::AddScalarField(fd, arrays::BorderPasses, static_cast<double>(result.Streaming.BorderPasses));
   labelmesher::AddScalarField(
@@ -458,6 +477,8 @@ void vtkLabelMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumAngle: " << this->MinimumAngle << " degrees\n";
   os << indent << "RelocateInteriorVertices: " << (this->RelocateInteriorVertices ? "On" : "Off") << "\n";
   os << indent << "BlockCells: " << this->BlockCells << " initial cells\n";
+  os << indent << "PartBlocks: " << this->PartBlocks << " blocks\n";
+  os << indent << "Distributed: " << this->Distributed << "\n";
   os << indent << "IncludeBackground: " << (this->IncludeBackground ? "On" : "Off") << "\n";
   os << indent << "MeasureOutput: " << (this->MeasureOutput ? "On" : "Off") << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB (0: the available memory)\n";

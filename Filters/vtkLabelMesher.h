@@ -199,6 +199,31 @@ public:
 
   ///@{
   /**
+   * Blocks per part (a count): a part is the blocks one process meshes when
+   * the run is Distributed; rank 0 joins the parts. The mesh depends on it
+   * (never on the number of processes). Default 2; 0: one part.
+   */
+  vtkSetMacro(PartBlocks, vtkIdType);
+  vtkGetMacro(PartBlocks, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Share the run out over MPI's processes when MPI runs with more than one
+   * (mpirun, started by the application): every process must be given the
+   * whole image and the same parameters; each meshes its parts, and rank 0's
+   * output is the mesh, the same as one process makes; the other processes'
+   * outputs are empty. A process that fails makes rank 0 fail with its rank and
+   * reason. Default off (a process meshes its input alone, as in ParaView,
+   * whose processes hold pieces of an image).
+   */
+  vtkSetMacro(Distributed, bool);
+  vtkGetMacro(Distributed, bool);
+  vtkBooleanMacro(Distributed, bool);
+  ///@}
+
+  ///@{
+  /**
    * Keep the background cells (label 0) in the output. Default off.
    */
   vtkSetMacro(IncludeBackground, bool);
@@ -300,6 +325,8 @@ protected:
   double MinimumAngle = 15.0;
   bool RelocateInteriorVertices = true;
   vtkIdType BlockCells = 1000000;
+  vtkIdType PartBlocks = 2;
+  bool Distributed = false;
   bool IncludeBackground = false;
   bool MeasureOutput = true;
   double MemoryLimit = 0.0;

@@ -104,6 +104,18 @@ double ParseMemory(const std::string& text)
   return value * unit;
 }
 
+/// "4" -> a count of blocks (0 allowed: one part).
+long long ParsePartBlocks(const std::string& text)
+{
+  long long value = -1;
+  const auto read = [](const std::string& t, std::size_t* used) { return std::stoll(t, used); };
+  if (!ReadWhole(text, read, value) || value < 0 || value > 1000000000LL)
+  {
+    throw UsageError("--part-blocks expects a whole number of blocks >= 0, got '" + text + "'");
+  }
+  return value;
+}
+
 /// "1000000", "250k", "2M" -> a count of cells (0 allowed: one block).
 long long ParseBlockCells(const std::string& text)
 {
@@ -245,6 +257,11 @@ const std::vector<Option>& Options()
       "block by block, so that peak memory follows one block\n"
       "and the output; 0: one block (k, M: 500k, 2M)  [default 1M]",
       [](Reading& r, const std::string& v) { r.Args.Settings.BlockCells = ParseBlockCells(v); } },
+    { nullptr, "--part-blocks", "N", false,
+      "blocks per part: under mpirun -np P each process meshes\n"
+      "its share of the parts, the same mesh for any P;\n"
+      "0: one part                                [default 2]",
+      [](Reading& r, const std::string& v) { r.Args.Settings.PartBlocks = ParsePartBlocks(v); } },
     { nullptr, "--max-memory", "SIZE", false,
       "the most memory the run may hold, MiB or with M/G\n"
       "(900M, 1.5G); a run estimated not to fit it (or the\n"
@@ -423,6 +440,10 @@ Arguments ParseArguments(int argc, const char* const* argv)
   if (given("--block-cells") && !args.Settings.Decimate)
   {
     throw UsageError("--block-cells streams mesher and decimator: it cannot go with --no-decimate");
+  }
+  if (given("--part-blocks") && !args.Settings.Decimate)
+  {
+    throw UsageError("--part-blocks groups the streamed blocks: it cannot go with --no-decimate");
   }
   if (given("--min-angle") && !args.Settings.Decimate)
   {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "MeshingPipeline.h"
 
+#include "MPIPartExchange.h"
+
 #include "vtkImageData.h"
 #include "vtkLabelMesher.h"
 #include "vtkNew.h"
@@ -40,6 +42,8 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetMinimumAngle(settings.MinimumAngle);
   mesher->SetRelocateInteriorVertices(settings.RelocateInteriorVertices);
   mesher->SetBlockCells(static_cast<vtkIdType>(settings.BlockCells));
+  mesher->SetPartBlocks(static_cast<vtkIdType>(settings.PartBlocks));
+  mesher->SetDistributed(settings.Distributed);
   mesher->SetIncludeBackground(settings.IncludeBackground);
   mesher->SetMeasureOutput(settings.Measure);
   mesher->SetMemoryLimit(settings.MemoryLimit);
@@ -56,6 +60,14 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
 
   MeshingOutcome out;
   out.Warning = messages.Warning;
+  if (settings.Distributed && !messages.Error.empty())
+  {
+    throw MeshingError(messages.Error);
+  }
+  if (settings.Distributed && labelmesher::WorldRank() != 0)
+  {
+    return out; // its parts went to rank 0
+  }
   vtkUnstructuredGrid* mesh = mesher->GetOutput();
   vtkUnstructuredGrid* curved = mesher->GetCurvedOutput();
   // A curving whose untangling failed is an error that still outputs the marked mesh: kept with

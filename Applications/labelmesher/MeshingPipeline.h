@@ -41,6 +41,10 @@ struct MeshingSettings
   double MeshToImageDistance = FilterDefaults()->GetMeshToImageDistance(); ///< voxels of the smallest spacing
   bool Decimate = FilterDefaults()->GetDecimate(); ///< decimate the mesher's mesh (streamed by blocks)
   long long BlockCells = FilterDefaults()->GetBlockCells(); ///< initial cells per streamed block; 0: one block
+  long long PartBlocks = FilterDefaults()->GetPartBlocks(); ///< blocks per part (a process's unit); 0: one part
+  /// Share the run out over mpirun's processes (vtkLabelMesher::Distributed): on ranks other
+  /// than 0 the outcome holds no mesh.
+  bool Distributed = false;
   /// Degrees, the decimator's bound: (0, vtkLabelMesher::GetProvenAngleBound(dimension)].
   double MinimumAngle = FilterDefaults()->GetMinimumAngle();
   bool RelocateInteriorVertices = FilterDefaults()->GetRelocateInteriorVertices(); ///< move interior vertices between rounds

@@ -17,6 +17,8 @@
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
+#include "MPIPartExchange.h"
+#include "MPIStartup.h"
 #include "MemoryBudget.h"
 #include "MeshFiles.h"
 #include "SafeFile.h"
@@ -94,13 +96,27 @@ void WriteReport(const std::string& path, const Report& report, Writer write)
   file.Commit();
 }
 
-int Run(const Arguments& args)
+/// The image read and checked against the command line.
+struct PreparedRun
 {
-  CheckOutputPaths(args);
+  LabeledImage Input;
+  labelmesher::MaterialTable Table;
+  double ReadSeconds = 0.0;
+};
+
+PreparedRun Prepare(const Arguments& args, bool writes)
+{
+  if (writes)
+  {
+    CheckOutputPaths(args);
+  }
+  PreparedRun run;
   const auto readStart = std::chrono::steady_clock::now();
-  LabeledImage input = ReadLabeledImage(args.Input);
-  vtkSmartPointer<vtkImageData> image = input.Image;
-  labelmesher::MaterialTable table = input.Materials;
+  run.Input = ReadLabeledImage(args.Input);
+  LabeledImage& input = run.Input;
+  vtkImageData* image = input.Image;
+  labelmesher::MaterialTable& table = run.Table;
+  table = input.Materials;
   if (!args.Labels.empty())
   {
     // The colour table names what it lists; other names (a .seg.nrrd's) stay.
@@ -116,14 +132,12 @@ int Run(const Arguments& args)
   {
     labelmesher::StoreMaterialTable(image->GetFieldData(), table);
   }
-  const double readSeconds = Seconds(readStart);
-  const bool curve = args.Settings.Curve;
-  if (curve && !IsTwoDimensional(image))
+  run.ReadSeconds = Seconds(readStart);
+  if (args.Settings.Curve && !IsTwoDimensional(image))
   {
     throw RunError("'curve' needs a 2D image (one extent of a single slice); '" + args.Input +
       "' is 3D");
   }
-  const bool quadratic = args.Settings.Order == 2;
   for (const std::string& output : args.Outputs)
   {
     if (IsTwoDimensional(image) && labelmesher::io::FormatOfPath(output) == labelmesher::io::MeshFormat::Stl)
@@ -132,12 +146,59 @@ int Run(const Arguments& args)
                      "segments (use .obj or .vtp)");
     }
   }
+  return run;
+}
 
-  const MeshingSettings& settings = args.Settings;
+int Run(const Arguments& args)
+{
+  // Under `mpirun -np N` (N > 1) every process reads the image and meshes its share of the
+  // blocks; rank 0 gathers, writes and reports (vtkLabelMesher::Distributed).
+  const bool distributed = labelmesher::LaunchedOnSeveralProcesses();
+  if (distributed)
+  {
+    labelmesher::StartMPI();
+  }
+  const bool root = labelmesher::WorldRank() == 0;
+  PreparedRun prepared;
+  std::string failure;
+  try
+  {
+    prepared = Prepare(args, root);
+  }
+  catch (const std::exception& e)
+  {
+    if (!distributed)
+    {
+      throw;
+    }
+    failure = e.what();
+  }
+  if (distributed)
+  {
+    // No process may mesh while another has given up: rank 0 would wait for its parts.
+    failure = labelmesher::FirstFailure(failure);
+    if (!failure.empty())
+    {
+      throw RunError(failure);
+    }
+  }
+  LabeledImage& input = prepared.Input;
+  vtkSmartPointer<vtkImageData> image = input.Image;
+  const labelmesher::MaterialTable& table = prepared.Table;
+  const double readSeconds = prepared.ReadSeconds;
+  const bool curve = args.Settings.Curve;
+  const bool quadratic = args.Settings.Order == 2;
+
+  MeshingSettings settings = args.Settings;
+  settings.Distributed = distributed;
   const double startMemory = labelmesher::ResidentBytes() / 1048576.0;
-  TerminalProgress bars(!args.Quiet);
+  TerminalProgress bars(!args.Quiet && root);
   const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
   bars.Finish();
+  if (!root)
+  {
+    return 0; // its parts went to rank 0, which writes and reports
+  }
   if (meshed.Aborted || !meshed.Mesh)
   {
     throw RunError("meshing was aborted");
@@ -239,6 +300,10 @@ int main(int argc, char* argv[])
   }
   catch (const std::bad_alloc&)
   {
+    if (labelmesher::WorldRank() != 0)
+    {
+      return 1; // rank 0 of a distributed run says why
+    }
     // An allocation outside the filters' guarded runs (reading, packing, writing): say what it is.
     std::cerr << "labelmesher: error: out of memory while reading the image or handling the mesh (the "
                  "meshing checks its own need beforehand): free memory, or raise --max-memory or ulimit -v\n";
@@ -246,7 +311,10 @@ int main(int argc, char* argv[])
   }
   catch (const std::exception& e)
   {
-    std::cerr << "labelmesher: error: " << e.what() << "\n";
+    if (labelmesher::WorldRank() == 0)
+    {
+      std::cerr << "labelmesher: error: " << e.what() << "\n"; // rank 0 of a distributed run names the process
+    }
     return 1;
   }
 }

@@ -143,6 +143,8 @@ RunReport MakeReport(const std::string& input, vtkImageData* image, vtkUnstructu
     d.Relocations = FieldCount(fd, arrays::VerticesRelocated);
     d.Blocks = FieldCount(fd, arrays::Blocks);
     d.LargestBlockCells = FieldCount(fd, arrays::LargestBlockCells);
+    d.Parts = FieldCount(fd, arrays::Parts);
+    d.Processes = FieldCount(fd, arrays::Processes);
     d.AssembledCells = FieldCount(fd, arrays::AssembledCells);
     d.BorderPasses = FieldCount(fd, arrays::BorderPasses);
     d.LargestAssembledCells = FieldCount(fd, arrays::LargestAssembledCells);
@@ -261,7 +263,12 @@ void PrintSummary(const RunReport& r, std::ostream& out)
     if (d.Blocks > 1)
     {
       out << "Streamed in " << d.Blocks << " blocks (largest " << d.LargestBlockCells << " initial " << cellName
-          << "); " << d.BorderPasses << " border passes, at most " << d.LargestAssembledCells << " " << cellName
+          << ") in " << d.Parts << (d.Parts == 1 ? " part" : " parts");
+      if (d.Processes > 1)
+      {
+        out << " over " << d.Processes << " processes";
+      }
+      out << "; " << d.BorderPasses << " border passes, at most " << d.LargestAssembledCells << " " << cellName
           << " assembled; last pass over " << d.AssembledCells << " " << cellName << "\n";
     }
   }
@@ -342,6 +349,8 @@ void WriteDecimationJson(const std::optional<DecimationEntry>& decimation, JsonW
   j.Key("vertices_relocated").Integer(d.Relocations);
   j.Key("blocks").Integer(d.Blocks);
   j.Key("largest_block_cells").Integer(d.LargestBlockCells);
+  j.Key("parts").Integer(d.Parts);
+  j.Key("processes").Integer(d.Processes);
   j.Key("assembled_cells").Integer(d.AssembledCells);
   j.Key("border_passes").Integer(d.BorderPasses);
   j.Key("largest_assembled_cells").Integer(d.LargestAssembledCells);

@@ -52,7 +52,7 @@ struct DecimationEntry
   long long Relocations = 0; ///< interior vertices moved between rounds of merges
   /// Streamed (vtkLabelMesher): blocks, initial cells of the largest, cells entering the last pass,
   /// border passes between blocks, the most cells the assembled blocks held.
-  long long Blocks = 0, LargestBlockCells = 0, AssembledCells = 0, BorderPasses = 0, LargestAssembledCells = 0;
+  long long Blocks = 0, Parts = 0, Processes = 0, LargestBlockCells = 0, AssembledCells = 0, BorderPasses = 0, LargestAssembledCells = 0;
 };
 
 /// Cells by their certified scaled Jacobian: bin 0 for cells not proved valid, bin b (1..10) for

@@ -14,6 +14,7 @@ packages=(
   zlib1g-dev                           # the CLI's PNG structure check
   qtbase5-dev libvtk9-qt-dev          # Qt5 widgets and the desktop viewer (QVTKOpenGLNativeWidget)
   libp4est-dev mpi-default-dev        # the octree (p4est 2.2, GPL-2.0-or-later) and the MPI it is built against
+  mpi-default-bin                      # mpirun: the CLI shared out over several processes (Testing/CLI/mpi_test.py)
   libgtest-dev libbenchmark-dev       # C++ tests and benchmarks
   libcgal-dev                          # baseline comparisons in the benchmarks
   clang libclang-rt-14-dev             # the libFuzzer targets (run-fuzzers.sh)

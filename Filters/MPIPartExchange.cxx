@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Parts as byte messages over MPI_COMM_WORLD: a length, then pieces of at most 1 GiB
+// (MPI counts are ints).
+#include "MPIPartExchange.h"
+
+#include "MPIStartup.h"
+#include "Streaming/PartExchange.h"
+
+#include <sc.h> // includes mpi.h when libsc was built with MPI (SC_ENABLE_MPI)
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace labelmesher
+{
+
+#ifdef SC_ENABLE_MPI
+namespace
+{
+
+/// Apart from any other traffic on the world communicator (ParaView's, say).
+constexpr int kPartTag = 7311;
+constexpr std::size_t kPiece = std::size_t(1) << 30;
+
+void Check(int status, const char* what)
+{
+  if (status != MPI_SUCCESS)
+    throw std::runtime_error(std::string("MPI could not ") + what);
+}
+
+class MPIPartExchange final : public PartExchange
+{
+public:
+  MPIPartExchange(int rank, int size)
+    : RankOfThis(rank)
+    , Size(size)
+  {
+  }
+  int Rank() const override { return RankOfThis; }
+  int Ranks() const override { return Size; }
+
+  void Send(const std::vector<char>& message) override
+  {
+    const auto length = static_cast<std::uint64_t>(message.size());
+    Check(MPI_Send(&length, 1, MPI_UINT64_T, 0, kPartTag, MPI_COMM_WORLD), "send a part's length");
+    for (std::size_t at = 0; at < message.size(); at += kPiece)
+    {
+      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
+      Check(MPI_Send(message.data() + at, n, MPI_BYTE, 0, kPartTag, MPI_COMM_WORLD), "send a part");
+    }
+  }
+
+  std::vector<char> Receive(int rank) override
+  {
+    std::uint64_t length = 0;
+    Check(MPI_Recv(&length, 1, MPI_UINT64_T, rank, kPartTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+      "receive a part's length");
+    std::vector<char> message(static_cast<std::size_t>(length));
+    for (std::size_t at = 0; at < message.size(); at += kPiece)
+    {
+      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
+      Check(MPI_Recv(message.data() + at, n, MPI_BYTE, rank, kPartTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "receive a part");
+    }
+    return message;
+  }
+
+private:
+  int RankOfThis, Size;
+};
+
+} // namespace
+#endif
+
+int WorldRank()
+{
+  int rank = 0;
+#ifdef SC_ENABLE_MPI
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized)
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+#endif
+  return rank;
+}
+
+int WorldSize()
+{
+  int size = 1;
+#ifdef SC_ENABLE_MPI
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized)
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+#endif
+  return size;
+}
+
+bool LaunchedOnSeveralProcesses()
+{
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  return size != nullptr && std::atoi(size) > 1;
+}
+
+std::string FirstFailure(const std::string& failure)
+{
+#ifdef SC_ENABLE_MPI
+  const int size = WorldSize();
+  if (size > 1)
+  {
+    int failed = failure.empty() ? 0 : 1;
+    std::vector<int> all(static_cast<std::size_t>(size));
+    Check(MPI_Allgather(&failed, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD), "gather the processes' state");
+    const auto first = std::find(all.begin(), all.end(), 1);
+    if (first == all.end())
+      return {};
+    const int root = static_cast<int>(first - all.begin());
+    std::uint64_t length = failure.size();
+    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, MPI_COMM_WORLD), "share a failure");
+    std::vector<char> reason(failure.begin(), failure.end());
+    reason.resize(static_cast<std::size_t>(length));
+    Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD), "share a failure");
+    const std::string text(reason.begin(), reason.end());
+    return root == 0 ? text : "process " + std::to_string(root) + " of " + std::to_string(size) + ": " + text;
+  }
+#endif
+  return failure;
+}
+
+std::unique_ptr<PartExchange> WorldPartExchange()
+{
+#ifdef SC_ENABLE_MPI
+  if (WorldSize() > 1)
+    return std::make_unique<MPIPartExchange>(WorldRank(), WorldSize());
+#endif
+  return nullptr;
+}
+
+} // namespace labelmesher

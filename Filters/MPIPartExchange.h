@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_MPIPartExchange_h
+#define labelmesher_MPIPartExchange_h
+
+/**
+ * @file MPIPartExchange.h
+ * The streamed pipeline's parts between the processes of MPI_COMM_WORLD
+ * (Streaming/PartExchange.h): what `mpirun -np N labelmesher mesh` runs on.
+ * Application plumbing, in library LabelMesherMPIStartup with MPI's start-up.
+ */
+
+#include <memory>
+#include <string>
+
+namespace labelmesher
+{
+
+class PartExchange;
+
+/// This process's rank in MPI_COMM_WORLD and the world's size (0 and 1 when
+/// MPI is not running or libsc has no MPI).
+int WorldRank();
+int WorldSize();
+
+/// True when this process was started by Open MPI's mpirun with more than
+/// one process (OMPI_COMM_WORLD_SIZE > 1): the application then starts MPI
+/// and shares the run out. Read from the environment, before MPI starts.
+bool LaunchedOnSeveralProcesses();
+
+/// Collective over MPI_COMM_WORLD: every process passes what stopped it ("":
+/// nothing) and all get the same answer, "" when none failed, else the lowest
+/// failing rank's reason ("process R of N: " before it unless R is 0). So that
+/// no process waits for one that has given up. One process: `failure` itself.
+std::string FirstFailure(const std::string& failure);
+
+/// An exchange over MPI_COMM_WORLD when it has more than one process, else
+/// null (one process needs none).
+std::unique_ptr<PartExchange> WorldPartExchange();
+
+} // namespace labelmesher
+
+#endif

@@ -1,0 +1,118 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""labelmesher under mpirun, one case per ctest test:
+
+    python3 mpi_test.py <path/to/labelmesher> <work dir> <case>
+
+same_mesh: `mpirun -np 2` and `-np 3` (oversubscribed on two cores) write the
+same mesh file, byte for byte, as one process, and rank 0's report (measured on
+the whole mesh) holds every guarantee. failing_process: a process that cannot
+go on (its input unreadable, its memory limit too small) ends the run with one
+line from rank 0 naming it, exit status 1, and no file written."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+EXE, WORK, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+# -q: without it, mpirun adds its own banner when a process exits non-zero.
+MPIRUN = ["mpirun", "-q", "--oversubscribe"]
+# mpirun refuses root unless told (CI runs as root); nothing else in its environment changes.
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_mca_base_component_show_load_errors="0")
+
+
+def path(name):
+    return os.path.join(WORK, CASE + "_" + name)
+
+
+def write_nrrd(name, labels):
+    filename = path(name)
+    header = ("NRRD0004\ntype: uchar\ndimension: 3\nsizes: {} {} {}\nspacings: 1 1 1\n"
+              "encoding: raw\n\n").format(*labels.shape[::-1])
+    with open(filename, "wb") as f:
+        f.write(header.encode() + labels.astype(np.uint8).tobytes())
+    return filename
+
+
+def three_labels(n=36):
+    """Two balls and a slab: enough interface for many small blocks."""
+    z, y, x = np.mgrid[0:n, 0:n, 0:n]
+    labels = np.zeros((n, n, n), np.uint8)
+    labels[(x - 12) ** 2 + (y - 13) ** 2 + (z - 14) ** 2 < 81] = 1
+    labels[(x - 23) ** 2 + (y - 22) ** 2 + (z - 21) ** 2 < 64] = 2
+    labels[(z > 27) & (x > 5)] = 3
+    return labels
+
+
+def run(command):
+    return subprocess.run(command, capture_output=True, text=True, timeout=540, env=ENV)
+
+
+def mesh_args(image, out, *extra):
+    # Blocks of 2,000 initial cells: about 20 blocks, 10 parts of 2.
+    return ["mesh", image, "-o", out, "--block-cells", "2000", *extra]
+
+
+def case_same_mesh():
+    image = write_nrrd("three.nrrd", three_labels())
+    one = path("one.msh")
+    result = run([EXE, *mesh_args(image, one, "--no-measure", "-q")])
+    assert result.returncode == 0, result.stderr
+    reference = open(one, "rb").read()
+    for ranks in (2, 3):
+        out, report_file = path(f"np{ranks}.msh"), path(f"np{ranks}.json")
+        for stale in (out, report_file):
+            if os.path.exists(stale):
+                os.remove(stale)
+        result = run([*MPIRUN, "-np", str(ranks), EXE, *mesh_args(image, out, "--report", report_file)])
+        assert result.returncode == 0, result.stderr
+        assert result.stderr.strip() == "", result.stderr
+        assert open(out, "rb").read() == reference, f"{ranks} processes wrote another mesh than one"
+        with open(report_file) as f:
+            report = json.load(f)
+        blocks = report["decimation"]["blocks"]
+        assert blocks >= 12, report["decimation"]
+        quality, fidelity = report["quality"], report["fidelity"]
+        assert quality["minimum_angle_degrees"] >= report["decimation"]["minimum_angle_bound_degrees"] - 1e-9, quality
+        assert quality["inverted_cells"] == 0, quality
+        assert fidelity["bounds_certified"] is True, fidelity
+        materials = report["topology"]["materials"]
+        assert {m["material"] for m in materials} >= {1, 2, 3}, materials
+        assert report["topology"]["all_match"] is True and all(m["matches"] for m in materials), materials
+        stages = [t["stage"] for t in report["timings"]]
+        assert "waiting for other processes" in stages, stages
+        print(f"OK: {ranks} processes, {blocks} blocks, the same {len(reference)} bytes as one process")
+
+
+def expect_one_line_failure(result, fragment, out):
+    assert result.returncode != 0, "the run did not fail"
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("labelmesher: error: "), result.stderr
+    assert fragment in lines[0], lines[0]
+    assert not os.path.exists(out), "a failed run wrote its output"
+    print("OK:", lines[0])
+
+
+def case_failing_process():
+    image = write_nrrd("three.nrrd", three_labels())
+    out = path("mesh.msh")
+    if os.path.exists(out):
+        os.remove(out)
+    # Rank 1 cannot read its input.
+    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
+                  "-np", "1", EXE, *mesh_args(path("missing.nrrd"), out)])
+    expect_one_line_failure(result, "process 1 of 2: ", out)
+    assert "missing.nrrd" in result.stderr, result.stderr
+    # Rank 2 is refused by its own memory limit.
+    result = run([*MPIRUN, "-np", "2", EXE, *mesh_args(image, out), ":",
+                  "-np", "1", EXE, *mesh_args(image, out, "--max-memory", "1M")])
+    expect_one_line_failure(result, "process 2 of 3: ", out)
+    assert "memory limit of 1 MiB" in result.stderr, result.stderr
+
+
+if __name__ == "__main__":
+    os.makedirs(WORK, exist_ok=True)
+    globals()["case_" + CASE]()

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstdint>
+#include <deque>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,6 +33,25 @@ void Check(int status, const char* what)
     throw std::runtime_error(std::string("MPI could not ") + what);
 }
 
+/// The lowest failing rank's reason, the same on every rank (collective).
+std::string FirstFailureOf(const std::string& failure, int size)
+{
+  int failed = failure.empty() ? 0 : 1;
+  std::vector<int> all(static_cast<std::size_t>(size));
+  Check(MPI_Allgather(&failed, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD), "gather the processes' state");
+  const auto first = std::find(all.begin(), all.end(), 1);
+  if (first == all.end())
+    return {};
+  const int root = static_cast<int>(first - all.begin());
+  std::uint64_t length = failure.size();
+  Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, MPI_COMM_WORLD), "share a failure");
+  std::vector<char> reason(failure.begin(), failure.end());
+  reason.resize(static_cast<std::size_t>(length));
+  Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD), "share a failure");
+  const std::string text(reason.begin(), reason.end());
+  return root == 0 ? text : "process " + std::to_string(root) + " of " + std::to_string(size) + ": " + text;
+}
+
 class MPIPartExchange final : public PartExchange
 {
 public:
@@ -40,18 +60,43 @@ public:
     , Size(size)
   {
   }
+  ~MPIPartExchange() override
+  {
+    try
+    {
+      Flush();
+    }
+    catch (...)
+    {
+    }
+  }
   int Rank() const override { return RankOfThis; }
   int Ranks() const override { return Size; }
 
-  void Send(const std::vector<char>& message) override
+  /// Sent without waiting: the message is kept until Flush sees rank 0 has it.
+  void Send(std::vector<char> message) override
   {
-    const auto length = static_cast<std::uint64_t>(message.size());
-    Check(MPI_Send(&length, 1, MPI_UINT64_T, 0, kPartTag, MPI_COMM_WORLD), "send a part's length");
-    for (std::size_t at = 0; at < message.size(); at += kPiece)
+    Outgoing& out = Pending.emplace_back();
+    out.Length = static_cast<std::uint64_t>(message.size());
+    out.Bytes = std::move(message);
+    out.Requests.emplace_back();
+    Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, 0, kPartTag, MPI_COMM_WORLD, &out.Requests.back()),
+      "send a part's length");
+    for (std::size_t at = 0; at < out.Bytes.size(); at += kPiece)
     {
-      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
-      Check(MPI_Send(message.data() + at, n, MPI_BYTE, 0, kPartTag, MPI_COMM_WORLD), "send a part");
+      const int n = static_cast<int>(std::min(kPiece, out.Bytes.size() - at));
+      out.Requests.emplace_back();
+      Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, 0, kPartTag, MPI_COMM_WORLD, &out.Requests.back()),
+        "send a part");
     }
+  }
+
+  void Flush() override
+  {
+    for (Outgoing& out : Pending)
+      Check(MPI_Waitall(static_cast<int>(out.Requests.size()), out.Requests.data(), MPI_STATUSES_IGNORE),
+        "finish sending a part");
+    Pending.clear();
   }
 
   std::vector<char> Receive(int rank) override
@@ -69,8 +114,17 @@ public:
     return message;
   }
 
+  std::string Agree(const std::string& failure) override { return FirstFailureOf(failure, Size); }
+
 private:
+  struct Outgoing
+  {
+    std::uint64_t Length = 0;
+    std::vector<char> Bytes;
+    std::vector<MPI_Request> Requests;
+  };
   int RankOfThis, Size;
+  std::deque<Outgoing> Pending; // a deque: the buffers MPI reads from stay in place as it grows
 };
 
 } // namespace
@@ -109,26 +163,30 @@ bool LaunchedOnSeveralProcesses()
 std::string FirstFailure(const std::string& failure)
 {
 #ifdef SC_ENABLE_MPI
-  const int size = WorldSize();
-  if (size > 1)
-  {
-    int failed = failure.empty() ? 0 : 1;
-    std::vector<int> all(static_cast<std::size_t>(size));
-    Check(MPI_Allgather(&failed, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD), "gather the processes' state");
-    const auto first = std::find(all.begin(), all.end(), 1);
-    if (first == all.end())
-      return {};
-    const int root = static_cast<int>(first - all.begin());
-    std::uint64_t length = failure.size();
-    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, MPI_COMM_WORLD), "share a failure");
-    std::vector<char> reason(failure.begin(), failure.end());
-    reason.resize(static_cast<std::size_t>(length));
-    Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD), "share a failure");
-    const std::string text(reason.begin(), reason.end());
-    return root == 0 ? text : "process " + std::to_string(root) + " of " + std::to_string(size) + ": " + text;
-  }
+  if (WorldSize() > 1)
+    return FirstFailureOf(failure, WorldSize());
 #endif
   return failure;
+}
+
+std::string DifferenceFromRankZero(const std::string& fingerprint)
+{
+#ifdef SC_ENABLE_MPI
+  if (WorldSize() > 1)
+  {
+    std::uint64_t length = fingerprint.size();
+    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "share the run's parameters");
+    std::vector<char> rankZero(fingerprint.begin(), fingerprint.end());
+    rankZero.resize(static_cast<std::size_t>(length));
+    Check(MPI_Bcast(rankZero.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD),
+      "share the run's parameters");
+    if (std::string(rankZero.begin(), rankZero.end()) != fingerprint)
+      return "it was given another image or other meshing parameters than process 0 (every process must mesh the "
+             "same)";
+  }
+#endif
+  (void)fingerprint;
+  return {};
 }
 
 std::unique_ptr<PartExchange> WorldPartExchange()

@@ -33,6 +33,10 @@ bool LaunchedOnSeveralProcesses();
 /// no process waits for one that has given up. One process: `failure` itself.
 std::string FirstFailure(const std::string& failure);
 
+/// Collective over MPI_COMM_WORLD: "" when `fingerprint` (what decides the
+/// mesh: the image and the parameters) is rank 0's, else a reason. One process: "".
+std::string DifferenceFromRankZero(const std::string& fingerprint);
+
 /// An exchange over MPI_COMM_WORLD when it has more than one process, else
 /// null (one process needs none).
 std::unique_ptr<PartExchange> WorldPartExchange();

@@ -18,9 +18,11 @@
  * released; the assembled mesh is then checked whole and decimated once more
  * around the borders. Peak memory follows one block and the output instead of
  * the initial mesh, which on large images is several times the output. The
- * mesh depends on BlockCells (the borders lie elsewhere), never on the number
- * of threads. With BlockCells 0 (one block) it is exactly the mesher followed
- * by the decimator.
+ * blocks are grouped PartBlocks to a part, the unit one process meshes when the
+ * run is Distributed over mpirun's processes. The mesh depends on BlockCells
+ * and PartBlocks (the borders lie elsewhere), never on the number of threads
+ * or processes. With BlockCells 0 (one block) it is exactly the mesher
+ * followed by the decimator.
  *
  * Decimate off: vtkLabelOctreeMesher's mesh, exactly (the initial mesh, angles
  * at least GetProvenAngleBound).

@@ -60,12 +60,12 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
 
   MeshingOutcome out;
   out.Warning = messages.Warning;
-  if (settings.Distributed && !messages.Error.empty())
-  {
-    throw MeshingError(messages.Error);
-  }
   if (settings.Distributed && labelmesher::WorldRank() != 0)
   {
+    if (!messages.Error.empty())
+    {
+      throw MeshingError(messages.Error); // rank 0 names this process in its own line
+    }
     return out; // its parts went to rank 0
   }
   vtkUnstructuredGrid* mesh = mesher->GetOutput();

@@ -26,12 +26,17 @@
 #include "itkObject.h"
 
 #include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkDataArray.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <cstdint>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -149,6 +154,46 @@ PreparedRun Prepare(const Arguments& args, bool writes)
   return run;
 }
 
+/// What decides the mesh, for checking that every process of a distributed run was given the
+/// same: the image (extent, spacing, origin, a hash of its voxels) and the meshing settings.
+std::string MeshingFingerprint(vtkImageData* image, const MeshingSettings& s)
+{
+  std::ostringstream out;
+  out.precision(17);
+  if (image != nullptr)
+  {
+    int extent[6];
+    image->GetExtent(extent);
+    for (int e : extent)
+    {
+      out << e << ' ';
+    }
+    for (double v : { image->GetSpacing()[0], image->GetSpacing()[1], image->GetSpacing()[2], image->GetOrigin()[0],
+           image->GetOrigin()[1], image->GetOrigin()[2] })
+    {
+      out << v << ' ';
+    }
+    if (vtkDataArray* labels = image->GetPointData()->GetScalars())
+    {
+      // FNV-1a over the voxels' bytes: a different image is caught before any process meshes.
+      const auto* bytes = static_cast<const unsigned char*>(labels->GetVoidPointer(0));
+      const std::size_t size = static_cast<std::size_t>(labels->GetNumberOfValues()) *
+        static_cast<std::size_t>(labels->GetDataTypeSize());
+      std::uint64_t hash = 14695981039346656037ULL;
+      for (std::size_t i = 0; i < size; ++i)
+      {
+        hash = (hash ^ bytes[i]) * 1099511628211ULL;
+      }
+      out << labels->GetDataType() << ' ' << hash << ' ';
+    }
+  }
+  out << s.ImageToMeshDistance << ' ' << s.MeshToImageDistance << ' ' << s.Decimate << ' ' << s.BlockCells << ' '
+      << s.PartBlocks << ' ' << s.MinimumAngle << ' ' << s.RelocateInteriorVertices << ' ' << s.IncludeBackground
+      << ' ' << s.Curve << ' ' << s.Smoothness << ' ' << s.Tension << ' ' << s.MaximumUntanglingSteps << ' '
+      << s.MaximumShorteningRounds << ' ' << s.QualityIterations << ' ' << s.MinimumScaledJacobian << ' ' << s.Order;
+  return out.str();
+}
+
 int Run(const Arguments& args)
 {
   // Under `mpirun -np N` (N > 1) every process reads the image and meshes its share of the
@@ -163,6 +208,11 @@ int Run(const Arguments& args)
   std::string failure;
   try
   {
+    if (distributed && !args.Settings.Decimate)
+    {
+      throw RunError("under mpirun the processes share out the decimated pipeline's parts; --no-decimate runs on "
+                     "one process");
+    }
     prepared = Prepare(args, root);
   }
   catch (const std::exception& e)
@@ -175,7 +225,14 @@ int Run(const Arguments& args)
   }
   if (distributed)
   {
-    // No process may mesh while another has given up: rank 0 would wait for its parts.
+    // Every process must mesh the same (rank 0 joins their parts), and none may mesh while
+    // another has given up (rank 0 would wait for its parts).
+    const std::string differs =
+      labelmesher::DifferenceFromRankZero(MeshingFingerprint(prepared.Input.Image, args.Settings));
+    if (failure.empty())
+    {
+      failure = differs;
+    }
     failure = labelmesher::FirstFailure(failure);
     if (!failure.empty())
     {
@@ -268,6 +325,14 @@ int Run(const Arguments& args)
   return 0;
 }
 
+/// False on the processes other than the first of an mpirun (read before MPI starts): they
+/// leave help, version and usage errors to it.
+bool FirstOfItsRun()
+{
+  const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+  return rank == nullptr || std::string(rank) == "0";
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -281,17 +346,23 @@ int main(int argc, char* argv[])
   }
   catch (const UsageError& e)
   {
-    std::cerr << "labelmesher: " << e.what() << " (see labelmesher --help)\n";
+    if (FirstOfItsRun())
+    {
+      std::cerr << "labelmesher: " << e.what() << " (see labelmesher --help)\n";
+    }
     return 2;
   }
   if (args.Help)
   {
-    std::cout << Usage();
+    std::cout << (FirstOfItsRun() ? Usage() : std::string());
     return 0;
   }
   if (args.Version)
   {
-    std::cout << "labelmesher " << LABELMESHER_VERSION << "\n";
+    if (FirstOfItsRun())
+    {
+      std::cout << "labelmesher " << LABELMESHER_VERSION << "\n";
+    }
     return 0;
   }
   try

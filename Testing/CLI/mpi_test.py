@@ -6,8 +6,9 @@
 same_mesh: `mpirun -np 2` and `-np 3` (oversubscribed on two cores) write the
 same mesh file, byte for byte, as one process, and rank 0's report (measured on
 the whole mesh) holds every guarantee. failing_process: a process that cannot
-go on (its input unreadable, its memory limit too small) ends the run with one
-line from rank 0 naming it, exit status 1, and no file written."""
+go on (its input unreadable, its memory limit too small, another image or other
+parameters than rank 0's) ends the run with one line from rank 0 naming it,
+exit status 1, and no file written; --no-decimate is refused the same way."""
 
 import json
 import os
@@ -51,40 +52,54 @@ def run(command):
     return subprocess.run(command, capture_output=True, text=True, timeout=540, env=ENV)
 
 
-def mesh_args(image, out, *extra):
-    # Blocks of 2,000 initial cells: about 20 blocks, 10 parts of 2.
-    return ["mesh", image, "-o", out, "--block-cells", "2000", *extra]
+def mesh_args(image, out, *extra, block_cells="2000"):
+    # Blocks of 2,000 initial cells: about 20 blocks of the generated image, 10 parts of 2.
+    return ["mesh", image, "-o", out, "--block-cells", block_cells, *extra]
+
+
+# A real label image (the shared data's rat head, ../shared/data/README.md), when it is there.
+RAT_HEAD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "shared", "data", "3d",
+                        "iso2mesh_rat_head.nrrd")
 
 
 def case_same_mesh():
-    image = write_nrrd("three.nrrd", three_labels())
-    one = path("one.msh")
-    result = run([EXE, *mesh_args(image, one, "--no-measure", "-q")])
+    same_mesh(write_nrrd("three.nrrd", three_labels()), "three", {1, 2, 3}, "2000")
+    if os.path.exists(RAT_HEAD):
+        same_mesh(RAT_HEAD, "rat", {1}, "20000")  # 10 blocks
+    else:
+        print("SKIP: the rat head (shared data) is not here")
+
+
+def same_mesh(image, name, labels, block_cells):
+    one = path(name + "_one.msh")
+    result = run([EXE, *mesh_args(image, one, "--no-measure", "-q", block_cells=block_cells)])
     assert result.returncode == 0, result.stderr
     reference = open(one, "rb").read()
     for ranks in (2, 3):
-        out, report_file = path(f"np{ranks}.msh"), path(f"np{ranks}.json")
+        out, report_file = path(f"{name}_np{ranks}.msh"), path(f"{name}_np{ranks}.json")
         for stale in (out, report_file):
             if os.path.exists(stale):
                 os.remove(stale)
-        result = run([*MPIRUN, "-np", str(ranks), EXE, *mesh_args(image, out, "--report", report_file)])
+        result = run([*MPIRUN, "-np", str(ranks), EXE,
+                      *mesh_args(image, out, "--report", report_file, block_cells=block_cells)])
         assert result.returncode == 0, result.stderr
         assert result.stderr.strip() == "", result.stderr
         assert open(out, "rb").read() == reference, f"{ranks} processes wrote another mesh than one"
         with open(report_file) as f:
             report = json.load(f)
         blocks = report["decimation"]["blocks"]
-        assert blocks >= 12, report["decimation"]
+        assert blocks >= 6 and report["decimation"]["parts"] >= 3, report["decimation"]
+        assert report["decimation"]["processes"] == ranks, report["decimation"]
         quality, fidelity = report["quality"], report["fidelity"]
         assert quality["minimum_angle_degrees"] >= report["decimation"]["minimum_angle_bound_degrees"] - 1e-9, quality
         assert quality["inverted_cells"] == 0, quality
         assert fidelity["bounds_certified"] is True, fidelity
         materials = report["topology"]["materials"]
-        assert {m["material"] for m in materials} >= {1, 2, 3}, materials
+        assert {m["material"] for m in materials} >= labels, materials
         assert report["topology"]["all_match"] is True and all(m["matches"] for m in materials), materials
         stages = [t["stage"] for t in report["timings"]]
         assert "waiting for other processes" in stages, stages
-        print(f"OK: {ranks} processes, {blocks} blocks, the same {len(reference)} bytes as one process")
+        print(f"OK: {name}, {ranks} processes, {blocks} blocks, the same {len(reference)} bytes as one process")
 
 
 def expect_one_line_failure(result, fragment, out):
@@ -111,6 +126,20 @@ def case_failing_process():
                   "-np", "1", EXE, *mesh_args(image, out, "--max-memory", "1M")])
     expect_one_line_failure(result, "process 2 of 3: ", out)
     assert "memory limit of 1 MiB" in result.stderr, result.stderr
+    # Rank 1 is given another angle bound: the processes would join parts of different meshes.
+    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
+                  "-np", "1", EXE, *mesh_args(image, out, "--min-angle", "10")])
+    expect_one_line_failure(result, "process 1 of 2: it was given another image or other meshing parameters", out)
+    # Rank 1 is given another image of the same size.
+    other = three_labels()
+    other[0, 0, 0] = 3
+    other_image = write_nrrd("other.nrrd", other)
+    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
+                  "-np", "1", EXE, *mesh_args(other_image, out)])
+    expect_one_line_failure(result, "process 1 of 2: it was given another image", out)
+    # Nothing to share out without decimation.
+    result = run([*MPIRUN, "-np", "2", EXE, "mesh", image, "-o", out, "--no-decimate"])
+    expect_one_line_failure(result, "--no-decimate runs on one process", out)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@
  * application's (Filters/MPIPartExchange.h); tests run the ranks in one process.
  */
 
+#include <string>
 #include <vector>
 
 namespace labelmesher
@@ -23,10 +24,17 @@ public:
   /// This process, in [0, Ranks()).
   virtual int Rank() const = 0;
   virtual int Ranks() const = 0;
-  /// From a rank other than 0: the next message to rank 0.
-  virtual void Send(const std::vector<char>& message) = 0;
+  /// From a rank other than 0: the next message to rank 0. It may return
+  /// before rank 0 takes it (so that the rank goes on meshing meanwhile).
+  virtual void Send(std::vector<char> message) = 0;
+  /// From a rank other than 0: returns once rank 0 has taken every message sent.
+  virtual void Flush() {}
   /// On rank 0: the next message from `rank` (messages of one rank arrive in the order sent).
   virtual std::vector<char> Receive(int rank) = 0;
+  /// Every rank, at the same point: each passes what stopped it ("": nothing)
+  /// and all get "" when none failed, else the lowest failing rank's reason
+  /// ("process R of N: " before it unless R is 0).
+  virtual std::string Agree(const std::string& failure) = 0;
 };
 
 } // namespace labelmesher

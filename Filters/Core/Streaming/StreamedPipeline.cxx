@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -533,7 +534,7 @@ std::string Reason(std::exception_ptr error)
 /// A rank other than 0: its parts, meshed and sent to rank 0 in order.
 void SendParts(const PieceContext& context, const std::vector<OctreeLeaf>& leaves,
   const std::vector<std::size_t>& starts, const DecimationParameters& decimation,
-  const StreamingParameters& streaming, PartExchange& exchange)
+  const StreamingParameters& streaming, const ProgressObserver& observer, PartExchange& exchange)
 {
   const std::size_t parts = starts.size() - 1;
   for (std::size_t p = 0; p < parts; ++p)
@@ -542,11 +543,12 @@ void SendParts(const PieceContext& context, const std::vector<OctreeLeaf>& leave
       continue;
     PartMessage message;
     DecimationResult unused;
-    const PartRun run = StreamPart(context, leaves, starts[p], decimation, streaming, {}, message.Part, unused);
+    const PartRun run = StreamPart(context, leaves, starts[p], decimation, streaming, observer, message.Part, unused);
     if (run.Whole || run.End != starts[p + 1])
       throw std::logic_error("a part ended at another leaf than the plan's");
     exchange.Send(PackPartMessage(message));
   }
+  exchange.Flush();
 }
 
 /// A rank other than 0 that failed: rank 0 takes this in place of the next
@@ -557,9 +559,18 @@ void SendFailure(PartExchange& exchange, std::exception_ptr error)
   failure.Failed = true;
   failure.Reason = Reason(error);
   exchange.Send(PackPartMessage(failure));
+  exchange.Flush();
 }
 
-void AddPartCounts(StreamedResult& result, const MeshPart& part, std::vector<StageTiming>& timings)
+/// A failure every rank has heard of (PartExchange::Agree): not sent again.
+struct AgreedFailure : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// A part's counts into the run's (its stage times are the meshing process's own: rank 0 adds
+/// those of its parts, and the others' wait shows as its "waiting for other processes").
+void AddPartCounts(StreamedResult& result, const MeshPart& part)
 {
   DecimationCounts& total = result.Decimated.Counts;
   AddMergeCounts(total, part.Counts);
@@ -573,7 +584,41 @@ void AddPartCounts(StreamedResult& result, const MeshPart& part, std::vector<Sta
   s.ForegroundCellsBefore += part.ForegroundCellsBefore;
   s.BorderPasses += part.BorderPasses;
   s.LargestAssembledCells = std::max(s.LargestAssembledCells, part.LargestAssembledCells);
-  timings.insert(timings.end(), part.Timings.begin(), part.Timings.end());
+}
+
+/// What every pass of a run reads: the octree, the image boundary, its
+/// faces' neighbourhoods, the box, and with several processes the parts.
+struct RunPlan
+{
+  MesherOctree Octree;
+  std::unique_ptr<ImageBoundary> Boundary;
+  std::vector<VoxelBox> Near;
+  Lattice BoxLow{}, BoxHigh{};
+  std::vector<std::size_t> Starts; ///< with several processes; one finds the parts as it goes
+};
+
+RunPlan MakeRunPlan(const LabelImage& image, const MesherParameters& mesher, const DecimationParameters& decimation,
+  const StreamingParameters& streaming, const ProgressObserver& observer, bool findParts, StageClock& clock)
+{
+  const int dimension = image.Dimension();
+  RunPlan plan;
+  const ProgressObserver octreeProgress{ [&](const std::string& stage, double f) {
+    return observer.Report(stage, 0.25 * f);
+  } };
+  plan.Octree = RefineOctree(image, mesher, octreeProgress, clock);
+  const std::vector<OctreeLeaf>& leaves = plan.Octree.Leaves;
+  const int depth = plan.Octree.Depth;
+  for (std::size_t i = 1; i < leaves.size(); ++i)
+    if (VoxelKey(leaves[i].Box.Origin, dimension, depth) <= VoxelKey(leaves[i - 1].Box.Origin, dimension, depth))
+      throw std::logic_error("the octree's leaves are not in Morton order");
+  plan.Boundary = std::make_unique<ImageBoundary>(image);
+  plan.Near = FaceNeighbourhoods(*plan.Boundary, decimation.ImageToMeshDistance, dimension, depth);
+  const std::int32_t extent = 2 * (std::int32_t(1) << depth);
+  plan.BoxLow = { -1, -1, dimension == 2 ? 0 : -1 };
+  plan.BoxHigh = { extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 };
+  if (findParts)
+    plan.Starts = PartStarts(image, leaves, streaming);
+  return plan;
 }
 
 /// MeshAndDecimate, whose failures on a rank other than 0 it reports to rank 0.
@@ -589,33 +634,43 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   StageClock clock(timings);
 
   // The octree over the whole image: small beside the mesh (one record per
-  // leaf). Every process refines it, and finds the same.
-  const ProgressObserver octreeProgress{ [&](const std::string& stage, double f) {
-    return observer.Report(stage, 0.25 * f);
-  } };
-  const MesherOctree octree = RefineOctree(image, mesher, octreeProgress, clock);
-  const std::vector<OctreeLeaf>& leaves = octree.Leaves;
-  result.Streaming.Leaves = leaves.size();
-  for (std::size_t i = 1; i < leaves.size(); ++i)
-    if (VoxelKey(leaves[i].Box.Origin, dimension, octree.Depth) <=
-      VoxelKey(leaves[i - 1].Box.Origin, dimension, octree.Depth))
-      throw std::logic_error("the octree's leaves are not in Morton order");
-
-  const ImageBoundary boundary(image);
-  const std::vector<VoxelBox> near =
-    FaceNeighbourhoods(boundary, decimation.ImageToMeshDistance, dimension, octree.Depth);
-  const std::int32_t extent = 2 * (std::int32_t(1) << octree.Depth);
-  const Lattice boxLow{ -1, -1, dimension == 2 ? 0 : -1 };
-  const Lattice boxHigh{ extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 };
-  const PieceContext pieces{ image, boundary, near, octree.Depth, boxLow, boxHigh, streaming.FreezeNearBorders };
+  // leaf). Every process refines it, finds the same, and with several
+  // processes the same parts; they go on only if all got this far.
   const int ranks = exchange != nullptr ? exchange->Ranks() : 1;
   result.Streaming.Processes = static_cast<std::size_t>(ranks);
-  // One process finds the parts as it goes; several need them beforehand.
-  const std::vector<std::size_t> starts = ranks > 1 ? PartStarts(image, leaves, streaming) : std::vector<std::size_t>{};
+  RunPlan plan;
+  if (ranks > 1)
+  {
+    std::exception_ptr error;
+    try
+    {
+      plan = MakeRunPlan(image, mesher, decimation, streaming, observer, true, clock);
+    }
+    catch (...)
+    {
+      error = std::current_exception();
+    }
+    const std::string failure = exchange->Agree(error ? Reason(error) : std::string());
+    if (!failure.empty())
+    {
+      if (error && exchange->Rank() == 0)
+        std::rethrow_exception(error);
+      throw AgreedFailure(failure);
+    }
+  }
+  else
+    plan = MakeRunPlan(image, mesher, decimation, streaming, observer, false, clock);
+  const std::vector<OctreeLeaf>& leaves = plan.Octree.Leaves;
+  const std::vector<std::size_t>& starts = plan.Starts;
+  const std::vector<VoxelBox>& near = plan.Near;
+  const ImageBoundary& boundary = *plan.Boundary;
+  const int depth = plan.Octree.Depth;
+  result.Streaming.Leaves = leaves.size();
+  const PieceContext pieces{ image, boundary, near, depth, plan.BoxLow, plan.BoxHigh, streaming.FreezeNearBorders };
   clock.Finish("block plan");
   if (ranks > 1 && exchange->Rank() != 0)
   {
-    SendParts(pieces, leaves, starts, decimation, streaming, *exchange);
+    SendParts(pieces, leaves, starts, decimation, streaming, observer, *exchange);
     result.HoldsMesh = false;
     out.Timings = Coalesced(timings);
     return result;
@@ -652,6 +707,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         if (ranks > 1 && run.End != starts[pending + 1])
           throw std::logic_error("a part ended at another leaf than the plan's");
         first = run.End;
+        timings.insert(timings.end(), part.Timings.begin(), part.Timings.end());
         clock.Restart(); // the part's stages are in its own timings
       }
       else
@@ -667,7 +723,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         first = starts[pending + 1];
         clock.Finish("waiting for other processes");
       }
-      AddPartCounts(result, part, timings);
+      AddPartCounts(result, part);
       assembly.Add(part);
       part = MeshPart{};
       if (first < leaves.size() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
@@ -676,7 +732,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         result.Streaming.LargestAssembledCells =
           std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
         const std::size_t passFrom = timings.size();
-        DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, octree.Depth), decimation, settled,
+        DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, depth), decimation, settled,
           assembly, observer, 0.15 + 0.7 * double(first) / double(leaves.size()), out.Counts, clock);
         PrefixStages(timings, passFrom, "joining parts: ");
         ++result.Streaming.BorderPasses;
@@ -740,6 +796,10 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   try
   {
     return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange);
+  }
+  catch (const AgreedFailure&)
+  {
+    throw; // every rank knows
   }
   catch (...)
   {

@@ -19,7 +19,7 @@
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "Streaming/BlockPlan.h"
-#include "Streaming/PartExchange.h"
+#include "QueuedPartExchange.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/ParallelChunks.h"
 #include "Support/StageClock.h"
@@ -27,6 +27,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <sstream>
@@ -184,54 +185,32 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
   SetThreadLimit(0);
 }
 
-/// Ranks run one after another in this process: each rank other than 0
-/// queues its messages, then rank 0 takes them.
-class QueuedExchange final : public PartExchange
-{
-public:
-  QueuedExchange(int rank, int ranks, std::map<int, std::deque<std::vector<char>>>& queues)
-    : RankOfThis(rank)
-    , Size(ranks)
-    , Queues(queues)
-  {
-  }
-  int Rank() const override { return RankOfThis; }
-  int Ranks() const override { return Size; }
-  void Send(const std::vector<char>& message) override { Queues[RankOfThis].push_back(message); }
-  std::vector<char> Receive(int rank) override
-  {
-    auto& queue = Queues[rank];
-    if (queue.empty())
-      throw std::logic_error("rank 0 waits for a message rank " + std::to_string(rank) + " never sends");
-    std::vector<char> message = std::move(queue.front());
-    queue.pop_front();
-    return message;
-  }
-
-private:
-  int RankOfThis, Size;
-  std::map<int, std::deque<std::vector<char>>>& Queues;
-};
-
-/// The pipeline on `ranks` processes; rank `failing` (if any) is stopped by its progress observer.
+/// The pipeline on `ranks` processes; rank `failing` (if any) is stopped by
+/// its progress observer at its first report of stage `stopAt`.
 StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesher,
-  const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1)
+  const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1,
+  const std::string& stopAt = "")
 {
-  std::map<int, std::deque<std::vector<char>>> queues;
-  const ProgressObserver stop{ [](const std::string&, double) { return false; } };
+  testing::QueuedRun run;
+  const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
   for (int rank = ranks - 1; rank > 0; --rank)
   {
-    QueuedExchange exchange(rank, ranks, queues);
+    testing::QueuedPartExchange exchange(rank, ranks, run);
     if (rank == failing)
     {
-      EXPECT_THROW(MeshAndDecimate(image, mesher, decimation, streaming, stop, &exchange), AbortRequested);
+      EXPECT_ANY_THROW(MeshAndDecimate(image, mesher, decimation, streaming, stop, &exchange));
+      continue;
+    }
+    if (std::any_of(run.Failures.begin(), run.Failures.end(), [](const auto& f) { return !f.second.empty(); }))
+    {
+      EXPECT_THROW(MeshAndDecimate(image, mesher, decimation, streaming, {}, &exchange), std::runtime_error);
       continue;
     }
     const StreamedResult other = MeshAndDecimate(image, mesher, decimation, streaming, {}, &exchange);
     EXPECT_FALSE(other.HoldsMesh);
     EXPECT_TRUE(other.Decimated.Mesh.Points.empty());
   }
-  QueuedExchange root(0, ranks, queues);
+  testing::QueuedPartExchange root(0, ranks, run);
   struct TakesEverything
   {
     std::map<int, std::deque<std::vector<char>>>& Queues;
@@ -240,7 +219,7 @@ StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesh
       for (const auto& [rank, queue] : Queues)
         EXPECT_TRUE(queue.empty()) << "rank 0 left a message of rank " << rank;
     }
-  } check{ queues };
+  } check{ run.Queues };
   return MeshAndDecimate(image, mesher, decimation, streaming, {}, &root);
 }
 
@@ -298,18 +277,25 @@ TEST(StreamedPipeline, AProcessThatFailsIsNamedByRankZero)
   StreamingParameters streaming;
   streaming.BlockCells = 300;
   streaming.PartBlocks = 1;
-  for (int failing : { 1, 2 })
-  {
-    try
+  // Stopped while refining the octree (every rank hears of it before any
+  // part is meshed: here only a rank that runs before the others can show
+  // that, the highest) or while filling a block (its reason comes in place
+  // of its part).
+  for (const std::string stage : { "octree", "fill" })
+    for (int failing : { 1, 2 })
     {
-      MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing);
-      ADD_FAILURE() << "rank 0 did not fail with process " << failing;
+      if (stage == "octree" && failing != 2)
+        continue;
+      try
+      {
+        MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing, stage);
+        ADD_FAILURE() << "rank 0 did not fail with process " << failing << " stopped at " << stage;
+      }
+      catch (const std::runtime_error& e)
+      {
+        EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped") << stage;
+      }
     }
-    catch (const std::runtime_error& e)
-    {
-      EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped");
-    }
-  }
 }
 
 TEST(StreamedPipeline, BorderPassesKeepTheAssembledBlocksSmall)

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_testing_QueuedPartExchange_h
+#define labelmesher_testing_QueuedPartExchange_h
+
+/**
+ * @file QueuedPartExchange.h
+ * Ranks of the streamed pipeline run one after another in one process
+ * (Streaming/PartExchange.h without MPI): each rank other than 0 runs first,
+ * highest first, queuing its messages; then rank 0 takes them. Agree sees the
+ * failures of the ranks that ran before. For the tests and the part balance
+ * benchmark.
+ */
+
+#include "Streaming/PartExchange.h"
+
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace labelmesher
+{
+namespace testing
+{
+
+/// What the ranks of one run share: their queued messages and what each passed to Agree.
+struct QueuedRun
+{
+  std::map<int, std::deque<std::vector<char>>> Queues;
+  std::map<int, std::string> Failures;
+  std::map<int, std::size_t> BytesSent;
+};
+
+class QueuedPartExchange final : public PartExchange
+{
+public:
+  QueuedPartExchange(int rank, int ranks, QueuedRun& run)
+    : RankOfThis(rank)
+    , Size(ranks)
+    , Run(run)
+  {
+  }
+  int Rank() const override { return RankOfThis; }
+  int Ranks() const override { return Size; }
+  void Send(std::vector<char> message) override
+  {
+    Run.BytesSent[RankOfThis] += message.size();
+    Run.Queues[RankOfThis].push_back(std::move(message));
+  }
+  std::vector<char> Receive(int rank) override
+  {
+    auto& queue = Run.Queues[rank];
+    if (queue.empty())
+      throw std::logic_error("rank 0 waits for a message rank " + std::to_string(rank) + " never sends");
+    std::vector<char> message = std::move(queue.front());
+    queue.pop_front();
+    return message;
+  }
+  std::string Agree(const std::string& failure) override
+  {
+    Run.Failures[RankOfThis] = failure;
+    for (const auto& [rank, reason] : Run.Failures)
+      if (!reason.empty())
+        return rank == 0 ? reason : "process " + std::to_string(rank) + " of " + std::to_string(Size) + ": " + reason;
+    return {};
+  }
+
+private:
+  int RankOfThis, Size;
+  QueuedRun& Run;
+};
+
+} // namespace testing
+} // namespace labelmesher
+
+#endif

@@ -343,6 +343,27 @@ void DecimateAssembled(const PieceContext& context, const KeyRange& keys, const 
   assembly.Add(mesh, scope.Frozen);
 }
 
+/// When the assembled blocks (or parts) are due for a border pass: once they
+/// hold a quarter of BlockCells cells and twice what the previous pass left.
+/// Doubling the threshold keeps the passes' merges within about twice the
+/// last pass's.
+class BorderPassRule
+{
+public:
+  explicit BorderPassRule(const StreamingParameters& streaming)
+    : Enabled(streaming.BorderPasses)
+    , Minimum(std::max<std::size_t>(1, streaming.BlockCells / 4))
+    , Next(Minimum)
+  {
+  }
+  bool Due(std::size_t assembledCells) const { return Enabled && assembledCells >= Next; }
+  void Passed(std::size_t cellsLeft) { Next = std::max(Minimum, 2 * cellsLeft); }
+
+private:
+  bool Enabled;
+  std::size_t Minimum, Next;
+};
+
 /// Where a part ends: the leaf after its last, and whether it was the whole mesh.
 struct PartRun
 {
@@ -367,8 +388,7 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
   std::vector<StageTiming> timings;
   StageClock clock(timings);
   BlockAssembly assembly(dimension);
-  const std::size_t minimumBorderPass = std::max<std::size_t>(1, streaming.BlockCells / 4);
-  std::size_t nextBorderPass = minimumBorderPass;
+  BorderPassRule borderPasses(streaming);
   // Per image face: certified by a finished block of this part (its
   // certificate lies in cells no later block changes), or selected for the
   // block under way.
@@ -447,13 +467,12 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
     // scope.Frozen now holds every vertex the block froze, its border's included.
     assembly.Add(block, scope.Frozen);
     first = last;
-    if (partGoesOn() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
+    if (partGoesOn() && borderPasses.Due(assembly.Mesh.NumberOfCells()))
     {
       // The part's blocks so far cover the keys [part's first, End): what
       // they froze at the borders between them can be resolved now, so that
       // the assembled mesh is the output so far and one frontier, not every
-      // block's border zone. Doubling the threshold each time keeps the
-      // passes' merges within about twice the last pass's; each pass also
+      // block's border zone (BorderPassRule). Each pass also
       // re-certifies the image faces of all blocks so far (Cassini 1024: 7
       // passes, 71 of 577 s).
       part.LargestAssembledCells = std::max(part.LargestAssembledCells, assembly.Mesh.NumberOfCells());
@@ -463,7 +482,7 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
         assembly, observer, at, part.Counts, clock);
       PrefixStages(timings, passFrom, "border passes: ");
       ++part.BorderPasses;
-      nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
+      borderPasses.Passed(assembly.Mesh.NumberOfCells());
     }
   }
   part.LargestAssembledCells = std::max(part.LargestAssembledCells, assembly.Mesh.NumberOfCells());
@@ -679,8 +698,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   // Rank 0: the parts, its own meshed here and the others' received, joined
   // in order, with border passes between them as between blocks.
   BlockAssembly assembly(dimension);
-  const std::size_t minimumBorderPass = std::max<std::size_t>(1, streaming.BlockCells / 4);
-  std::size_t nextBorderPass = minimumBorderPass;
+  BorderPassRule borderPasses(streaming);
   std::vector<std::uint8_t> settled(near.size(), 0);
   std::size_t pending = 0; // the first part not yet taken
   std::vector<std::uint8_t> failed(static_cast<std::size_t>(ranks), 0);
@@ -726,7 +744,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
       AddPartCounts(result, part);
       assembly.Add(part);
       part = MeshPart{};
-      if (first < leaves.size() && streaming.BorderPasses && assembly.Mesh.NumberOfCells() >= nextBorderPass)
+      if (first < leaves.size() && borderPasses.Due(assembly.Mesh.NumberOfCells()))
       {
         ReleaseFreedMemory();
         result.Streaming.LargestAssembledCells =
@@ -736,7 +754,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
           assembly, observer, 0.15 + 0.7 * double(first) / double(leaves.size()), out.Counts, clock);
         PrefixStages(timings, passFrom, "joining parts: ");
         ++result.Streaming.BorderPasses;
-        nextBorderPass = std::max(minimumBorderPass, 2 * assembly.Mesh.NumberOfCells());
+        borderPasses.Passed(assembly.Mesh.NumberOfCells());
       }
     }
   }

@@ -24,6 +24,9 @@ inline constexpr char Materials[] = "Materials"; ///< int x 2, labels on either 
 inline constexpr char MinimumJacobian[] = "MinimumJacobian";
 inline constexpr char ScaledJacobian[] = "ScaledJacobian";
 inline constexpr char Valid[] = "Valid";
+/// int, on a run shared out over several processes (vtkLabelMesher under mpirun): the rank
+/// that meshed the part the cell's centroid lies in; a .pvtu has one piece per rank by it
+inline constexpr char Process[] = "Process";
 inline constexpr char CornerAngle[] = "CornerAngle"; ///< double, a curved cell's smallest corner angle (tangents), degrees
 
 // ---- field data: the materials' names and colours, one tuple per material ----

@@ -18,11 +18,14 @@
 #include "vtkBezierCurver.h"
 #include "vtkLabelOctreeMesher.h"
 
+#include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
@@ -430,6 +433,16 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   const labelmesher::SimplexMesh kept = labelmesher::SelectMaterials(std::move(decimated.Mesh), this->IncludeBackground);
   labelmesher::PackVolumeMesh(kept, placement, output);
   labelmesher::PackInterfaces(decimated.Interfaces, decimated.InterfaceMaterials, placement, boundary);
+  if (!result.Parts.StartKeys.empty())
+  {
+    // Who meshed what: the pieces of a .pvtu, and a colouring that shows the partition.
+    const std::vector<std::int32_t> process = labelmesher::CellProcesses(kept, result.Parts);
+    vtkNew<vtkIntArray> processArray;
+    processArray->SetName(arrays::Process);
+    processArray->SetNumberOfValues(static_cast<vtkIdType>(process.size()));
+    std::copy(process.begin(), process.end(), processArray->GetPointer(0));
+    output->GetCellData()->AddArray(processArray);
+  }
 
   vtkFieldData* fd = output->GetFieldData();
   const std::size_t before =

@@ -188,7 +188,7 @@ const std::vector<Option>& Options()
       "[required]. The mesh with a group per material:\n"
       "  .vtu  VTK XML         .vtk  VTK legacy (binary)\n"
       "  .msh  Gmsh 4.1 ASCII  .inp  Abaqus\n"
-      "  .mesh Medit\n"
+      "  .mesh Medit           .pvtu VTK XML, a piece per process\n"
       "the interfaces between materials (mesh only):\n"
       "  .vtp  VTK XML         .stl  binary STL (3D)\n"
       "  .obj  Wavefront OBJ\n"
@@ -491,11 +491,11 @@ Arguments ParseArguments(int argc, const char* const* argv)
     }
     if (args.Command == "curve" && !labelmesher::io::HoldsCurvedCells(*format))
     {
-      throw UsageError("output '" + output + "': curved (cubic) cells can be written as .vtu, .vtk or .msh only");
+      throw UsageError("output '" + output + "': curved (cubic) cells can be written as .vtu, .pvtu, .vtk or .msh only");
     }
     if (args.Settings.Order == 2 && !labelmesher::io::HoldsQuadraticCells(*format))
     {
-      throw UsageError("output '" + output + "': quadratic cells can be written as .vtu, .vtk, .msh, .inp or "
+      throw UsageError("output '" + output + "': quadratic cells can be written as .vtu, .pvtu, .vtk, .msh, .inp or "
                        ".mesh only");
     }
     if (std::find(args.Outputs.begin(), args.Outputs.begin() + static_cast<std::ptrdiff_t>(i), output) !=

@@ -5,6 +5,7 @@
 #include "AbaqusWriter.h"
 #include "GmshWriter.h"
 #include "MeditWriter.h"
+#include "PvtuWriter.h"
 #include "SafeFile.h"
 #include "SurfaceWriters.h"
 #include "VtkFileWriters.h"
@@ -31,7 +32,7 @@ struct Extension
   const char* Suffix;
   MeshFormat Format;
 };
-constexpr Extension Extensions[] = { { ".vtu", MeshFormat::Vtu }, { ".vtk", MeshFormat::LegacyVtk },
+constexpr Extension Extensions[] = { { ".vtu", MeshFormat::Vtu }, { ".pvtu", MeshFormat::Pvtu }, { ".vtk", MeshFormat::LegacyVtk },
   { ".msh", MeshFormat::Gmsh }, { ".inp", MeshFormat::Abaqus }, { ".mesh", MeshFormat::Medit },
   { ".vtp", MeshFormat::Vtp }, { ".stl", MeshFormat::Stl }, { ".obj", MeshFormat::Obj } };
 
@@ -101,7 +102,8 @@ std::string KnownExtensions()
 
 bool HoldsCurvedCells(MeshFormat format)
 {
-  return format == MeshFormat::Vtu || format == MeshFormat::LegacyVtk || format == MeshFormat::Gmsh;
+  return format == MeshFormat::Vtu || format == MeshFormat::Pvtu || format == MeshFormat::LegacyVtk ||
+    format == MeshFormat::Gmsh;
 }
 
 bool HoldsQuadraticCells(MeshFormat format)
@@ -192,6 +194,7 @@ std::vector<std::string> MeshFileWriter::Write(const std::string& path)
   switch (*format)
   {
     case MeshFormat::Vtu: WriteWhole(path, [&](std::ostream& out) { WriteVtu(this->Mesh, out); }); break;
+    case MeshFormat::Pvtu: return WritePvtu(this->Mesh, path);
     case MeshFormat::LegacyVtk: WriteWhole(path, [&](std::ostream& out) { WriteLegacyVtk(this->Mesh, out); }); break;
     case MeshFormat::Vtp: WriteWhole(path, [&](std::ostream& out) { WriteVtp(this->Interfaces, out); }); break;
     case MeshFormat::Gmsh:

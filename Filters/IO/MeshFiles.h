@@ -12,6 +12,7 @@
  * | extension | format                                   | holds                  |
  * |-----------|------------------------------------------|------------------------|
  * | .vtu      | VTK XML unstructured grid                | cells, all arrays      |
+ * | .pvtu     | the same in pieces, one per process      | cells, all arrays      |
  * | .vtk      | VTK legacy, binary                       | cells, all arrays      |
  * | .msh      | Gmsh MSH 4.1 (or 2.2) ASCII              | cells, interfaces      |
  * | .inp      | Abaqus input                             | cells, interface nodes |
@@ -41,6 +42,7 @@ namespace io
 enum class MeshFormat
 {
   Vtu,
+  Pvtu, ///< summary and .vtu pieces (PvtuWriter.h)
   LegacyVtk,
   Gmsh,
   Abaqus,
@@ -52,12 +54,12 @@ enum class MeshFormat
 
 /// The format of `path`'s extension (case-insensitive), if it is one.
 std::optional<MeshFormat> FormatOfPath(const std::string& path);
-/// ".vtu, .vtk, .msh, .inp, .mesh, .vtp, .stl, .obj"
+/// ".vtu, .pvtu, .vtk, .msh, .inp, .mesh, .vtp, .stl, .obj"
 std::string KnownExtensions();
-/// True for the formats that hold curved (cubic) cells: .vtu, .vtk (Bezier cells) and .msh
+/// True for the formats that hold curved (cubic) cells: .vtu, .pvtu, .vtk (Bezier cells) and .msh
 /// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);
-/// Formats that hold quadratic cells (VTK_QUADRATIC_TETRA, VTK_QUADRATIC_TRIANGLE): .vtu, .vtk,
+/// Formats that hold quadratic cells (VTK_QUADRATIC_TETRA, VTK_QUADRATIC_TRIANGLE): .vtu, .pvtu, .vtk,
 /// .msh (10-node tetrahedra, 6-node triangles), .inp (C3D10, CPS6), .mesh (Medit's TetrahedraP2
 /// and TrianglesP2, in VTK's node order; Debian's meshio cannot read them, Gmsh reads the 3D
 /// ones: CLI.export_quadratic, CLI.export_quadratic_2d).

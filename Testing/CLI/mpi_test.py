@@ -5,7 +5,8 @@
 
 same_mesh: `mpirun -np 2` and `-np 3` (oversubscribed on two cores) write the
 same mesh file, byte for byte, as one process, and rank 0's report (measured on
-the whole mesh) holds every guarantee. failing_process: a process that cannot
+the whole mesh) holds every guarantee; their .pvtu has one piece per process
+(each piece the cells of its "Process"), together the one-process .vtu's cells. failing_process: a process that cannot
 go on (its input unreadable, its memory limit too small, another image or other
 parameters than rank 0's) ends the run with one line from rank 0 naming it,
 exit status 1, and no file written; --no-decimate is refused the same way."""
@@ -16,6 +17,8 @@ import subprocess
 import sys
 
 import numpy as np
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
 EXE, WORK, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 # -q: without it, mpirun adds its own banner when a process exits non-zero.
@@ -70,21 +73,55 @@ def case_same_mesh():
         print("SKIP: the rat head (shared data) is not here")
 
 
+def read_grid(reader_type, filename):
+    reader = reader_type()
+    reader.SetFileName(filename)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def cells_by_position(grid):
+    """The cells as a sorted list of (material, their corners' coordinates sorted): the same for
+    the same mesh however its points are numbered or its cells split into pieces."""
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    materials = vtk_to_numpy(grid.GetCellData().GetArray("Material"))
+    connectivity = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 4)
+    return sorted((int(m), tuple(sorted(map(tuple, points[c].round(9).tolist()))))
+                  for m, c in zip(materials, connectivity))
+
+
+def check_pieces(summary, ranks, reference_cells):
+    """One piece per process, each the cells of its "Process" value, together the reference."""
+    with open(summary) as f:
+        sources = [line.split('Source="')[1].split('"')[0] for line in f if 'Source="' in line]
+    assert len(sources) == ranks, sources
+    for rank, source in enumerate(sources):
+        piece = read_grid(vtkXMLUnstructuredGridReader, os.path.join(os.path.dirname(summary), source))
+        assert piece.GetNumberOfCells() > 0, f"process {rank}'s piece is empty"
+        process = vtk_to_numpy(piece.GetCellData().GetArray("Process"))
+        assert (process == rank).all(), f"piece {rank} holds cells of processes {set(process.tolist())}"
+    whole = read_grid(vtkXMLPUnstructuredGridReader, summary)
+    assert cells_by_position(whole) == reference_cells, "the pieces are not the one-process mesh"
+
+
 def same_mesh(image, name, labels, block_cells):
-    one = path(name + "_one.msh")
-    result = run([EXE, *mesh_args(image, one, "--no-measure", "-q", block_cells=block_cells)])
+    one, one_vtu = path(name + "_one.msh"), path(name + "_one.vtu")
+    result = run([EXE, *mesh_args(image, one, "-o", one_vtu, "--no-measure", "-q", block_cells=block_cells)])
     assert result.returncode == 0, result.stderr
     reference = open(one, "rb").read()
+    reference_cells = cells_by_position(read_grid(vtkXMLUnstructuredGridReader, one_vtu))
     for ranks in (2, 3):
         out, report_file = path(f"{name}_np{ranks}.msh"), path(f"{name}_np{ranks}.json")
-        for stale in (out, report_file):
+        summary = path(f"{name}_np{ranks}.pvtu")
+        for stale in (out, report_file, summary):
             if os.path.exists(stale):
                 os.remove(stale)
         result = run([*MPIRUN, "-np", str(ranks), EXE,
-                      *mesh_args(image, out, "--report", report_file, block_cells=block_cells)])
+                      *mesh_args(image, out, "-o", summary, "--report", report_file, block_cells=block_cells)])
         assert result.returncode == 0, result.stderr
         assert result.stderr.strip() == "", result.stderr
         assert open(out, "rb").read() == reference, f"{ranks} processes wrote another mesh than one"
+        check_pieces(summary, ranks, reference_cells)
         with open(report_file) as f:
             report = json.load(f)
         blocks = report["decimation"]["blocks"]
@@ -116,10 +153,13 @@ def case_failing_process():
     out = path("mesh.msh")
     if os.path.exists(out):
         os.remove(out)
-    # Rank 1 cannot read its input.
-    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
-                  "-np", "1", EXE, *mesh_args(path("missing.nrrd"), out)])
+    # Rank 1 cannot read its input: no file at all, the .pvtu's pieces neither.
+    summary = path("mesh.pvtu")
+    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "-o", summary), ":",
+                  "-np", "1", EXE, *mesh_args(path("missing.nrrd"), out, "-o", summary)])
     expect_one_line_failure(result, "process 1 of 2: ", out)
+    left = [f for f in os.listdir(WORK) if f.startswith(CASE + "_mesh")]
+    assert not left, left
     assert "missing.nrrd" in result.stderr, result.stderr
     # Rank 2 is refused by its own memory limit.
     result = run([*MPIRUN, "-np", "2", EXE, *mesh_args(image, out), ":",

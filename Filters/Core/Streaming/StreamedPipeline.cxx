@@ -13,6 +13,7 @@
 #include "Streaming/PartExchange.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -526,6 +527,21 @@ int OwnerOf(std::size_t part, std::size_t parts, int ranks)
   return static_cast<int>((2 * part + 1) * static_cast<std::size_t>(ranks) / (2 * parts));
 }
 
+PartMap MapOfParts(const std::vector<OctreeLeaf>& leaves, const std::vector<std::size_t>& starts, int dimension,
+  int depth, int ranks)
+{
+  PartMap map;
+  map.Dimension = dimension;
+  map.Depth = depth;
+  const std::size_t parts = starts.size() - 1;
+  for (std::size_t p = 0; p < parts; ++p)
+  {
+    map.StartKeys.push_back(VoxelKey(leaves[starts[p]].Box.Origin, dimension, depth));
+    map.Owners.push_back(OwnerOf(p, parts, ranks));
+  }
+  return map;
+}
+
 std::string Reason(std::exception_ptr error)
 {
   try
@@ -799,11 +815,37 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   FinishDecimation(mesh, out);
   clock.Finish("decimation output");
   out.Timings = Coalesced(timings);
+  if (ranks > 1)
+    result.Parts = MapOfParts(leaves, starts, dimension, depth, ranks);
   observer.Report("decimation done", 1.0);
   return result;
 }
 
 } // namespace
+
+std::vector<std::int32_t> CellProcesses(const SimplexMesh& mesh, const PartMap& parts)
+{
+  std::vector<std::int32_t> process(mesh.NumberOfCells(), 0);
+  if (parts.StartKeys.empty())
+    return process;
+  const int nv = mesh.VerticesPerCell();
+  const int last = (1 << parts.Depth) - 1;
+  for (std::size_t c = 0; c < process.size(); ++c)
+  {
+    std::array<double, 3> centroid{ 0, 0, 0 };
+    for (int k = 0; k < nv; ++k)
+      for (int a = 0; a < 3; ++a)
+        centroid[a] += mesh.Points[static_cast<std::size_t>(mesh.Cell(c)[k])][a] / nv;
+    std::array<int, 3> voxel{ 0, 0, 0 };
+    for (int a = 0; a < parts.Dimension; ++a) // voxel centres at integers: its voxel is the nearest
+      voxel[a] = std::clamp(static_cast<int>(std::lround(centroid[a])), 0, last);
+    const std::uint64_t key = VoxelKey(voxel, parts.Dimension, parts.Depth);
+    const auto after = std::upper_bound(parts.StartKeys.begin(), parts.StartKeys.end(), key);
+    const std::size_t part = after == parts.StartKeys.begin() ? 0 : std::size_t(after - parts.StartKeys.begin()) - 1;
+    process[c] = parts.Owners[part];
+  }
+  return process;
+}
 
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,

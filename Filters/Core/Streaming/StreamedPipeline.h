@@ -51,6 +51,8 @@
 #include "Support/ProgressObserver.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace labelmesher
 {
@@ -94,6 +96,22 @@ struct StreamingCounts
   std::size_t MergesInBlocks = 0;     ///< merges done before the last pass (in the blocks and the border passes)
 };
 
+/// Which process meshed which part of the box: part p covers the Morton keys
+/// [StartKeys[p], StartKeys[p + 1]) (the last to the end) and was meshed by
+/// Owners[p]. Empty for a run on one process.
+struct PartMap
+{
+  int Dimension = 3;
+  int Depth = 0; ///< of the octree: keys of voxels in [0, 2^Depth)^Dimension
+  std::vector<std::uint64_t> StartKeys;
+  std::vector<int> Owners;
+};
+
+/// Per cell of `mesh` (points in index space, as DecimationResult::Mesh): the
+/// process that meshed the part its centroid's voxel lies in. A cell merged
+/// across a seam goes to one side. All 0 for an empty map.
+std::vector<std::int32_t> CellProcesses(const SimplexMesh& mesh, const PartMap& parts);
+
 struct StreamedResult
 {
   DecimationResult Decimated;
@@ -101,6 +119,8 @@ struct StreamedResult
   /// False on the processes other than rank 0 of a run shared out over
   /// several: they sent their parts to rank 0 and hold no mesh.
   bool HoldsMesh = true;
+  /// On rank 0 of a run shared out over several processes: who meshed what.
+  PartMap Parts;
 };
 
 /// Meshes `image` with `mesher` and decimates with `decimation` block by

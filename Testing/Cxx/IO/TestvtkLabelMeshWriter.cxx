@@ -13,9 +13,14 @@
 #include "vtkLabelOctreeMesher.h"
 #include "vtkMeshDecimator.h"
 
+#include "LabelMesherArrayNames.h"
+
+#include "vtkCellData.h"
 #include "vtkFieldData.h"
+#include "vtkIntArray.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkXMLPUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
 #include <gtest/gtest.h>
@@ -250,6 +255,87 @@ TEST_F(WriterTest, FailedWritesReturnZeroSayOneLineAndLeaveNothing)
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_NE(errors[0].find("interface"), std::string::npos) << errors[0];
   EXPECT_FALSE(fs::exists(this->Path("s.stl")));
+}
+
+/// The mesher's output with its cells given to `processes` processes in runs, as a
+/// distributed run's "Process" array gives them.
+vtkSmartPointer<vtkUnstructuredGrid> WithProcesses(vtkUnstructuredGrid* mesh, int processes)
+{
+  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  copy->ShallowCopy(mesh);
+  vtkNew<vtkIntArray> process;
+  process->SetName(labelmesher::arrays::Process);
+  const vtkIdType n = mesh->GetNumberOfCells();
+  for (vtkIdType c = 0; c < n; ++c)
+    process->InsertNextValue(static_cast<int>(c * processes / n));
+  copy->GetCellData()->AddArray(process);
+  return copy;
+}
+
+int WriteGrid(vtkUnstructuredGrid* mesh, const std::string& path, std::vector<std::string>& errors)
+{
+  vtkNew<vtkLabelMeshWriter> writer;
+  MessageRecorder recorder(writer, vtkCommand::ErrorEvent);
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  const int ok = writer->Write();
+  errors = recorder.Messages;
+  return ok;
+}
+
+TEST_F(WriterTest, PvtuHasOnePiecePerProcess)
+{
+  vtkUnstructuredGrid* mesh = Mesher->GetOutput();
+  ASSERT_GT(mesh->GetNumberOfCells(), 30);
+  std::vector<std::string> errors;
+  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 3), this->Path("m.pvtu"), errors), 1) << (errors.empty() ? "" : errors[0]);
+  EXPECT_EQ(Listing(this->Folder), (std::set<std::string>{ "m.pvtu", "m_0.vtu", "m_1.vtu", "m_2.vtu" }));
+  vtkIdType cells = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> piece;
+    piece->SetFileName(this->Path("m_" + std::to_string(k) + ".vtu").c_str());
+    piece->Update();
+    vtkDataArray* process = piece->GetOutput()->GetCellData()->GetArray(labelmesher::arrays::Process);
+    ASSERT_NE(process, nullptr);
+    ASSERT_GT(process->GetNumberOfTuples(), 0);
+    for (vtkIdType c = 0; c < process->GetNumberOfTuples(); ++c)
+      ASSERT_EQ(process->GetComponent(c, 0), k) << "piece " << k;
+    EXPECT_EQ(labelmesher::ReadMaterialTable(piece->GetOutput()->GetFieldData()).NameOf(1), "outer shell");
+    cells += piece->GetOutput()->GetNumberOfCells();
+  }
+  EXPECT_EQ(cells, mesh->GetNumberOfCells());
+  vtkNew<vtkXMLPUnstructuredGridReader> whole;
+  whole->SetFileName(this->Path("m.pvtu").c_str());
+  whole->Update();
+  EXPECT_EQ(whole->GetOutput()->GetNumberOfCells(), mesh->GetNumberOfCells());
+  EXPECT_NE(whole->GetOutput()->GetCellData()->GetArray(labelmesher::arrays::Material), nullptr);
+
+  // One process (no "Process" array): one piece.
+  ASSERT_EQ(WriteGrid(mesh, this->Path("one.pvtu"), errors), 1);
+  EXPECT_TRUE(fs::exists(this->Path("one_0.vtu")));
+  EXPECT_FALSE(fs::exists(this->Path("one_1.vtu")));
+}
+
+TEST_F(WriterTest, AFailedPvtuLeavesNoPiece)
+{
+  const vtkSmartPointer<vtkUnstructuredGrid> mesh = WithProcesses(Mesher->GetOutput(), 3);
+  fs::create_directories(this->Folder / "taken_1.vtu"); // the second piece cannot be written
+  fs::create_symlink("/dev/full", this->Folder / "full.pvtu"); // the summary, written last, cannot
+  const std::pair<std::string, std::string> cases[] = {
+    { this->Path("missing/m.pvtu"), "missing" },
+    { this->Path("taken.pvtu"), "taken_1.vtu" },
+    { this->Path("full.pvtu"), "No space left on device" },
+  };
+  for (const auto& [path, fragment] : cases)
+  {
+    const std::set<std::string> before = Listing(this->Folder);
+    std::vector<std::string> errors;
+    EXPECT_EQ(WriteGrid(mesh, path, errors), 0) << path;
+    ASSERT_EQ(errors.size(), 1u) << path;
+    EXPECT_NE(errors[0].find(fragment), std::string::npos) << errors[0];
+    EXPECT_EQ(Listing(this->Folder), before) << path;
+  }
 }
 
 } // namespace

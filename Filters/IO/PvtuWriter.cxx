@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The summary from VTK's parallel writer (run on an empty grid with the mesh's arrays, in a
+// scratch folder), the pieces through SafeFile: VTK's file output does not report a failed
+// final flush, and writing the pieces ourselves keeps every byte checked.
+#include "PvtuWriter.h"
+
+#include "LabelMesherArrayNames.h"
+#include "SafeFile.h"
+#include "VtkFileWriters.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExtractCells.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLPUnstructuredGridWriter.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace labelmesher
+{
+namespace io
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+
+/// A scratch folder, removed with everything in it when this goes.
+class ScratchFolder
+{
+public:
+  ScratchFolder()
+  {
+    std::string pattern = (fs::temp_directory_path() / "labelmesher-pvtu-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw WriteError("cannot make a scratch folder in " + fs::temp_directory_path().string());
+    this->Path = pattern;
+  }
+  ~ScratchFolder()
+  {
+    std::error_code ignored;
+    fs::remove_all(this->Path, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  fs::path Path;
+};
+
+/// The piece of every cell: its "Process" value, or 0 without that array.
+std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh)
+{
+  std::vector<int> piece(static_cast<std::size_t>(mesh->GetNumberOfCells()), 0);
+  vtkDataArray* process = mesh->GetCellData()->GetArray(arrays::Process);
+  for (vtkIdType c = 0; process && c < mesh->GetNumberOfCells(); ++c)
+    piece[static_cast<std::size_t>(c)] = static_cast<int>(process->GetComponent(c, 0));
+  return piece;
+}
+
+/// The cells of `mesh` whose piece is `which`, with the points they use.
+vtkSmartPointer<vtkUnstructuredGrid> Piece(vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which)
+{
+  vtkNew<vtkIdList> cells;
+  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
+    if (pieceOfCell[c] == which)
+      cells->InsertNextId(static_cast<vtkIdType>(c));
+  vtkNew<vtkExtractCells> extract;
+  extract->SetInputData(mesh);
+  extract->SetCellList(cells);
+  extract->Update();
+  auto piece = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  piece->ShallowCopy(extract->GetOutput());
+  piece->GetCellData()->RemoveArray("vtkOriginalCellIds");
+  piece->GetPointData()->RemoveArray("vtkOriginalPointIds");
+  piece->SetFieldData(mesh->GetFieldData()); // the material table, run fields: each piece reads alone
+  return piece;
+}
+
+/// VTK's summary for `pieces` pieces of `mesh` named after `path`, as text.
+std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int pieces)
+{
+  // The summary lists the arrays of its input and a piece for each piece VTK writes beside it
+  // (none for an empty one): its input is the mesh's first cell, every piece that cell, all
+  // thrown away with the scratch folder.
+  const vtkSmartPointer<vtkUnstructuredGrid> sample = Piece(mesh, std::vector<int>(1, 0), 0);
+  const ScratchFolder scratch;
+  const fs::path summary = scratch.Path / fs::path(path).filename();
+  std::string error;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&error);
+  onError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* message = static_cast<std::string*>(clientData);
+    if (message->empty() && callData)
+      *message = static_cast<const char*>(callData);
+  });
+  vtkNew<vtkXMLPUnstructuredGridWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, onError);
+  writer->SetInputData(sample);
+  writer->SetFileName(summary.string().c_str());
+  writer->SetNumberOfPieces(pieces);
+  writer->SetStartPiece(0);
+  writer->SetEndPiece(pieces - 1);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  std::ifstream in;
+  if (writer->Write())
+    in.open(summary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  if (!error.empty() || !in || s.find("</VTKFile>") == std::string::npos)
+  {
+    const std::size_t at = error.find("): ");
+    throw WriteError("VTK's parallel writer failed" +
+      (error.empty() ? std::string() : ": " + error.substr(at == std::string::npos ? 0 : at + 3)));
+  }
+  return s;
+}
+
+/// The Source="..." of every piece in `summary`, in order.
+std::vector<std::string> PieceSources(const std::string& summary)
+{
+  std::vector<std::string> sources;
+  const std::string tag = "Source=\"";
+  for (std::size_t at = summary.find(tag); at != std::string::npos; at = summary.find(tag, at))
+  {
+    at += tag.size();
+    const std::size_t end = summary.find('"', at);
+    if (end == std::string::npos)
+      break;
+    sources.push_back(summary.substr(at, end - at));
+  }
+  return sources;
+}
+
+void WriteWhole(const std::string& path, const std::string& bytes)
+{
+  SafeFile file(path);
+  file.Stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  file.Commit();
+}
+
+} // namespace
+
+std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string& path)
+{
+  if (mesh->GetNumberOfCells() == 0)
+    throw WriteError("cannot write '" + path + "': the mesh has no cells");
+  const std::vector<int> pieceOfCell = PieceOfCells(mesh);
+  int pieces = 1;
+  for (int p : pieceOfCell)
+  {
+    if (p < 0)
+      throw WriteError("cannot write '" + path + "': a cell's process is negative");
+    pieces = std::max(pieces, p + 1);
+  }
+  std::vector<std::string> written;
+  try
+  {
+    const std::string summary = SummaryText(mesh, path, pieces);
+    const std::vector<std::string> sources = PieceSources(summary);
+    if (static_cast<int>(sources.size()) != pieces)
+      throw WriteError("VTK's summary lists " + std::to_string(sources.size()) + " pieces, not " +
+        std::to_string(pieces));
+    const fs::path folder = fs::path(path).parent_path();
+    for (int p = 0; p < pieces; ++p)
+    {
+      const fs::path source = sources[static_cast<std::size_t>(p)];
+      const fs::path piecePath = folder / source;
+      // VTK 9.2 and later put the pieces in a folder of their own beside the summary.
+      if (source.has_parent_path() && fs::is_directory(folder.empty() ? fs::path(".") : folder))
+        fs::create_directories(piecePath.parent_path());
+      std::ostringstream bytes;
+      WriteVtu(Piece(mesh, pieceOfCell, p), bytes);
+      WriteWhole(piecePath.string(), bytes.str());
+      written.push_back(piecePath.string());
+    }
+    WriteWhole(path, summary);
+  }
+  catch (const std::exception& e)
+  {
+    for (const std::string& piece : written)
+      std::remove(piece.c_str());
+    const std::string reason = e.what();
+    // SafeFile's errors name the file (a piece or the summary); the others are the summary's.
+    throw WriteError(reason.rfind("cannot write '", 0) == 0 ? reason : "cannot write '" + path + "': " + reason);
+  }
+  written.insert(written.begin(), path);
+  return written;
+}
+
+} // namespace io
+} // namespace labelmesher

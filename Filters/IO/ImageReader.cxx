@@ -16,6 +16,7 @@
 #include "itkImageFileReader.h"
 #include "itkImageIOBase.h"
 #include "itkImageIOFactory.h"
+#include "itkMultiThreaderBase.h"
 
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkCommand.h"
@@ -148,8 +149,21 @@ vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOB
   return output;
 }
 
+/// ITK's default threader is a pool whose threads start with the first ITK object, and a thread
+/// that cannot start (no address space left: `ulimit -v`) ends the process in std::terminate.
+/// Reading needs no threads: the platform threader starts none until a filter runs in parallel.
+void AvoidITKThreadPool()
+{
+  static const bool once = [] {
+    itk::MultiThreaderBase::SetGlobalDefaultThreader(itk::MultiThreaderBase::ThreaderEnum::Platform);
+    return true;
+  }();
+  (void)once;
+}
+
 vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
 {
+  AvoidITKThreadPool();
   const detail::TextHeader header = detail::ReadTextHeader(path); // before NrrdIO or MetaIO parses it
   const QuietStandardError quiet;
   detail::CheckDetachedDataFile(path, header);

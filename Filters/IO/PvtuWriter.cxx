@@ -12,10 +12,10 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkExtractCells.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLPUnstructuredGridWriter.h"
@@ -67,21 +67,52 @@ std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh)
   return piece;
 }
 
-/// The cells of `mesh` whose piece is `which`, with the points they use.
+/// The cells of `mesh` whose piece is `which`, with the points they use (in their order), and
+/// every array. (vtkExtractCells does the same, but its module brings VTK's parallel DIY and MPI
+/// libraries into every program that writes a mesh: their address space alone made a run under
+/// `ulimit -v` 100 MiB abort in ITK's thread pool instead of being refused in one line.)
 vtkSmartPointer<vtkUnstructuredGrid> Piece(vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which)
 {
-  vtkNew<vtkIdList> cells;
-  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
-    if (pieceOfCell[c] == which)
-      cells->InsertNextId(static_cast<vtkIdType>(c));
-  vtkNew<vtkExtractCells> extract;
-  extract->SetInputData(mesh);
-  extract->SetCellList(cells);
-  extract->Update();
   auto piece = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  piece->ShallowCopy(extract->GetOutput());
-  piece->GetCellData()->RemoveArray("vtkOriginalCellIds");
-  piece->GetPointData()->RemoveArray("vtkOriginalPointIds");
+  std::vector<vtkIdType> pointOf(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
+  std::vector<vtkIdType> usedPoints, cells;
+  vtkNew<vtkIdList> ids;
+  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
+  {
+    if (pieceOfCell[c] != which)
+      continue;
+    cells.push_back(static_cast<vtkIdType>(c));
+    mesh->GetCellPoints(static_cast<vtkIdType>(c), ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      vtkIdType& id = pointOf[static_cast<std::size_t>(ids->GetId(k))];
+      if (id < 0)
+      {
+        id = static_cast<vtkIdType>(usedPoints.size());
+        usedPoints.push_back(ids->GetId(k));
+      }
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(static_cast<vtkIdType>(usedPoints.size()));
+  piece->GetPointData()->CopyAllocate(mesh->GetPointData(), static_cast<vtkIdType>(usedPoints.size()));
+  for (std::size_t p = 0; p < usedPoints.size(); ++p)
+  {
+    points->SetPoint(static_cast<vtkIdType>(p), mesh->GetPoint(usedPoints[p]));
+    piece->GetPointData()->CopyData(mesh->GetPointData(), usedPoints[p], static_cast<vtkIdType>(p));
+  }
+  piece->SetPoints(points);
+  piece->Allocate(static_cast<vtkIdType>(cells.size()));
+  piece->GetCellData()->CopyAllocate(mesh->GetCellData(), static_cast<vtkIdType>(cells.size()));
+  for (std::size_t c = 0; c < cells.size(); ++c)
+  {
+    mesh->GetCellPoints(cells[c], ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      ids->SetId(k, pointOf[static_cast<std::size_t>(ids->GetId(k))]);
+    piece->InsertNextCell(mesh->GetCellType(cells[c]), ids);
+    piece->GetCellData()->CopyData(mesh->GetCellData(), cells[c], static_cast<vtkIdType>(c));
+  }
   piece->SetFieldData(mesh->GetFieldData()); // the material table, run fields: each piece reads alone
   return piece;
 }

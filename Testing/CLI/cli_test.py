@@ -439,7 +439,7 @@ def case_memory_limit():
         print("OK: memory limits (ulimit -v part skipped under AddressSanitizer)")
         return
     refused = 0
-    for mib in (100, 120, 200, 300, 400, 600, 1000):
+    for mib in (80, 100, 120, 200, 300, 400, 600, 1000):
         if os.path.exists(out):
             os.remove(out)
         def limit(mib=mib):

@@ -164,7 +164,7 @@ def case_export_curved_msh():
     check = subprocess.run(["gmsh", msh, "-check"], capture_output=True, text=True)
     assert check.returncode == 0 and "Error" not in check.stdout + check.stderr, (check.stdout + check.stderr)[-500:]
     # Formats without cubic triangles are refused before meshing.
-    cli.expect_failure(cli.run("curve", png, "-o", cli.path("curved.mesh")), ".vtu, .vtk or .msh only", 2)
+    cli.expect_failure(cli.run("curve", png, "-o", cli.path("curved.mesh")), ".vtu, .pvtu, .vtk or .msh only", 2)
     print("OK: curved mesh as 10-node triangles, %d cells, nodes within %.1e" % (len(cells), worst))
 
 
@@ -549,7 +549,7 @@ def case_bad_output_paths():
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "-o", cli.path("m.vtu")), "twice", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "--report", cli.path("m.vtu")), "overwrite", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.msh"), "--msh-version", "3"), "4.1 or 2.2", 2)
-    cli.expect_failure(cli.run("curve", image, "-o", cli.path("m.inp")), ".vtu, .vtk or .msh only", 2)
+    cli.expect_failure(cli.run("curve", image, "-o", cli.path("m.inp")), ".vtu, .pvtu, .vtk or .msh only", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "--report", cli.path("missing/r.json")),
                        "does not exist")
     print("OK: bad output paths fail first")

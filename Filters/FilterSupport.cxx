@@ -130,6 +130,10 @@ void RequestWholeImages(vtkInformationVector* port)
       info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
         info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
       info->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+      // Under MPI the request is also piece P of N, which the image's producer turns into its
+      // own slab of the extent (ParaView): the whole image is piece 0 of 1.
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
     }
   }
 }

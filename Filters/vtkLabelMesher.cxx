@@ -5,6 +5,7 @@
 
 #include "FilterStage.h"
 #include "FilterSupport.h"
+#include "ImageFingerprint.h"
 #include "MPIPartExchange.h"
 #include "MPIStartup.h"
 #include "Streaming/PartExchange.h"
@@ -34,6 +35,7 @@
 #include <memory>
 #include <exception>
 #include <new>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -370,8 +372,17 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
     this->Distributed && labelmesher::MPIRunning() ? labelmesher::WorldPartExchange() : nullptr;
   if (exchange)
   {
-    // Every process goes on or none does: rank 0 would wait for the parts of one that stopped.
-    problem = labelmesher::FirstFailure(problem);
+    // Every process meshes the same (rank 0 joins their parts: parts of different images or
+    // parameters make no mesh), and goes on or none does (rank 0 would wait for the parts of
+    // one that stopped).
+    std::ostringstream parameters;
+    parameters.precision(17);
+    parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
+               << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << blockCells << ' '
+               << this->PartBlocks << ' ' << this->Order;
+    const std::string differs =
+      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input, labels) + parameters.str());
+    problem = labelmesher::FirstFailure(problem.empty() ? differs : problem);
   }
   if (!problem.empty())
   {

@@ -216,8 +216,9 @@ public:
    * whole image and the same parameters; each meshes its parts, and rank 0's
    * output is the mesh, the same as one process makes; the other processes'
    * outputs are empty. A process that fails makes rank 0 fail with its rank and
-   * reason. Default off (a process meshes its input alone, as in ParaView,
-   * whose processes hold pieces of an image).
+   * reason; every process's image and parameters are compared with rank 0's
+   * first. Default off here (a process meshes its input alone); on in the
+   * ParaView plugin, where the filter asks every process for the whole image.
    */
   vtkSetMacro(Distributed, bool);
   vtkGetMacro(Distributed, bool);

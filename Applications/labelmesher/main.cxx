@@ -17,6 +17,7 @@
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
+#include "ImageFingerprint.h"
 #include "MPIPartExchange.h"
 #include "MPIStartup.h"
 #include "MemoryBudget.h"
@@ -160,33 +161,7 @@ std::string MeshingFingerprint(vtkImageData* image, const MeshingSettings& s)
 {
   std::ostringstream out;
   out.precision(17);
-  if (image != nullptr)
-  {
-    int extent[6];
-    image->GetExtent(extent);
-    for (int e : extent)
-    {
-      out << e << ' ';
-    }
-    for (double v : { image->GetSpacing()[0], image->GetSpacing()[1], image->GetSpacing()[2], image->GetOrigin()[0],
-           image->GetOrigin()[1], image->GetOrigin()[2] })
-    {
-      out << v << ' ';
-    }
-    if (vtkDataArray* labels = image->GetPointData()->GetScalars())
-    {
-      // FNV-1a over the voxels' bytes: a different image is caught before any process meshes.
-      const auto* bytes = static_cast<const unsigned char*>(labels->GetVoidPointer(0));
-      const std::size_t size = static_cast<std::size_t>(labels->GetNumberOfValues()) *
-        static_cast<std::size_t>(labels->GetDataTypeSize());
-      std::uint64_t hash = 14695981039346656037ULL;
-      for (std::size_t i = 0; i < size; ++i)
-      {
-        hash = (hash ^ bytes[i]) * 1099511628211ULL;
-      }
-      out << labels->GetDataType() << ' ' << hash << ' ';
-    }
-  }
+  out << labelmesher::ImageFingerprint(image, image != nullptr ? image->GetPointData()->GetScalars() : nullptr);
   out << s.ImageToMeshDistance << ' ' << s.MeshToImageDistance << ' ' << s.Decimate << ' ' << s.BlockCells << ' '
       << s.PartBlocks << ' ' << s.MinimumAngle << ' ' << s.RelocateInteriorVertices << ' ' << s.IncludeBackground
       << ' ' << s.Curve << ' ' << s.Smoothness << ' ' << s.Tension << ' ' << s.MaximumUntanglingSteps << ' '

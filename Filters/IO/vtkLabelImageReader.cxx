@@ -117,6 +117,10 @@ int vtkLabelImageReader::RequestInformation(vtkInformation*, vtkInformationVecto
     return 1;
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->Image->GetExtent(), 6);
+  // Any sub-extent: under MPI (pvbatch, pvserver) every process gets the one it asks for (a
+  // slab of the image, or the whole of it for Label Mesher); a source that cannot produce
+  // sub-extents gives every process but the first an empty image.
+  outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   outInfo->Set(vtkDataObject::SPACING(), this->Image->GetSpacing(), 3);
   outInfo->Set(vtkDataObject::ORIGIN(), this->Image->GetOrigin(), 3);
   outInfo->Set(vtkDataObject::DIRECTION(), this->Image->GetDirectionMatrix()->GetData(), 9);
@@ -134,6 +138,11 @@ int vtkLabelImageReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     return 1;
   }
   output->ShallowCopy(this->Image);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    output->Crop(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT())); // no-op for the whole extent
+  }
   return 1;
 }
 

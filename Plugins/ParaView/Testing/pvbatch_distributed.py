@@ -1,0 +1,64 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""pvbatch: Label Mesher on a label image read by the plugin's reader on every process, its
+output fetched to rank 0 (all processes' pieces appended), summed up as JSON for
+pvbatch_mpi_test.py to compare between one process and several.
+
+usage: [mpirun -np N] pvbatch [--no-mpi] pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json
+       mpirun -np N pvbatch --symmetric pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json OTHER
+(every process runs the script; those but rank 0 read OTHER: the run must refuse it)
+"""
+import hashlib
+import json
+import sys
+
+from paraview import servermanager
+from paraview.simple import LoadPlugin
+from paraview.vtk.util.numpy_support import vtk_to_numpy
+
+plugin, image_path, block_cells, out_path = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+rank = servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
+if len(sys.argv) > 5 and rank != 0:
+    image_path = sys.argv[5]
+LoadPlugin(plugin, remote=False, ns=globals())
+
+reader = LabelImageReader(FileName=image_path)  # noqa: F821 (the plugin's proxy)
+reader.UpdatePipeline()
+mesher = LabelMesher(Input=reader, BlockCells=block_cells)  # noqa: F821 (Distributed: on by default)
+mesher.Labels = ["POINTS", "Labels"]
+mesher.UpdatePipeline()
+mesh = servermanager.Fetch(mesher)
+
+
+def field(name):
+    array = mesh.GetFieldData().GetArray(name)
+    return None if array is None else [array.GetTuple1(i) for i in range(array.GetNumberOfTuples())]
+
+
+def summary():
+    if mesh.GetNumberOfCells() == 0:
+        return {"cells": 0}
+    points = vtk_to_numpy(mesh.GetPoints().GetData())
+    materials = vtk_to_numpy(mesh.GetCellData().GetArray("Material"))
+    connectivity = vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 4)
+    # The cells by their corners' positions: the same mesh however its points are numbered.
+    cells = sorted((int(m), tuple(sorted(map(tuple, points[c].round(9).tolist()))))
+                   for m, c in zip(materials, connectivity))
+    process = mesh.GetCellData().GetArray("Process")
+    return {
+        "cells": len(cells),
+        "cells_sha256": hashlib.sha256(repr(cells).encode()).hexdigest(),
+        "processes_field": field("Processes"),
+        "process_values": sorted(set(vtk_to_numpy(process).tolist())) if process is not None else None,
+        "minimum_angle": field("MinimumAngle"),
+        "angle_bound": field("AngleBound"),
+        "inverted_cells": field("InvertedCells"),
+        "bounds_certified": field("HausdorffBoundsCertified"),
+        "topology_matches": field("TopologyMatches"),
+    }
+
+
+# --symmetric runs the script on every process: rank 0 alone writes, and every process goes on to
+# the end, where ParaView's finalization waits for all.
+if rank == 0:
+    with open(out_path, "w") as f:
+        json.dump(summary(), f)

@@ -1,0 +1,67 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Label Mesher in pvbatch under `mpirun -np 2` gives the same mesh as in one pvbatch process:
+every process reads the image with the plugin's reader, each meshes its parts, rank 0 joins
+them; the output fetched to rank 0 holds the same cells (compared by their corners' positions),
+cells of both processes (cell array Process), and every guarantee measured on it. A process given
+another image than rank 0's makes the run refuse, in one error line naming it, with no mesh.
+
+usage: python3 pvbatch_mpi_test.py PVBATCH PLUGIN IMAGE BLOCK_CELLS WORKDIR
+(PYTHONPATH: ParaView's Python packages, as for pvbatch.)
+"""
+import json
+import os
+import subprocess
+import sys
+
+pvbatch, plugin, image, block_cells, workdir = sys.argv[1:6]
+os.makedirs(workdir, exist_ok=True)
+script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pvbatch_distributed.py")
+# mpirun refuses root unless told (CI runs as root).
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def run(prefix, name, *other):
+    out = os.path.join(workdir, name + ".json")
+    if os.path.exists(out):
+        os.remove(out)
+    result = subprocess.run([*prefix, script, plugin, image, block_cells, out, *other],
+                            capture_output=True, text=True, timeout=540, env=env)
+    assert result.returncode == 0 and os.path.exists(out), (result.returncode, result.stdout, result.stderr)
+    with open(out) as f:
+        return json.load(f), result.stderr
+
+
+one, _ = run([pvbatch, "--no-mpi"], "one")
+two, _ = run(["mpirun", "-q", "-np", "2", pvbatch], "two")
+print("one process:", one)
+print("two processes:", two)
+assert one["cells"] > 0, one
+assert one["processes_field"] == [1.0] and one["process_values"] is None, one
+assert two["processes_field"] == [2.0], f"the run was not shared out: {two}"
+assert two["process_values"] == [0, 1], f"not both processes meshed cells: {two['process_values']}"
+assert (two["cells"], two["cells_sha256"]) == (one["cells"], one["cells_sha256"]), \
+    "two processes gave another mesh than one"
+for summary in (one, two):
+    assert summary["minimum_angle"][0] >= summary["angle_bound"][0] - 1e-9, summary
+    assert summary["inverted_cells"] == [0.0] and summary["bounds_certified"] == [1.0], summary
+    assert summary["topology_matches"] and all(m == 1 for m in summary["topology_matches"]), summary
+print(f"OK: pvbatch under mpirun -np 2: the same {one['cells']} cells as one process, every guarantee holds")
+
+# Rank 1 reads another image (the same labels with one voxel changed, as raw NRRD): refused before
+# any meshing, the difference found by the voxels' hash.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../Testing/Support"))
+from label_nrrd import read_label_nrrd  # noqa: E402
+
+labels, spacing = read_label_nrrd(image)
+labels = labels.copy()
+labels.flat[0] = 1 if labels.flat[0] != 1 else 2
+other = os.path.join(workdir, "other.nrrd")
+with open(other, "wb") as f:
+    f.write(("NRRD0004\ntype: {}\ndimension: 3\nsizes: {} {} {}\nspacings: {} {} {}\nencoding: raw\n\n".format(
+        {1: "uint8", 2: "uint16", 4: "uint32"}[labels.dtype.itemsize], *labels.shape[::-1], *spacing)).encode())
+    f.write(labels.astype(labels.dtype.newbyteorder("<")).tobytes())
+refused, stderr = run(["mpirun", "-q", "-np", "2", pvbatch, "--symmetric"], "refused", other)
+assert refused["cells"] == 0, refused
+errors = [line for line in stderr.splitlines() if "ERR|" in line]
+assert errors and all("process 1 of 2: it was given another image" in line for line in errors), stderr
+print("OK: a process given another image is named, no mesh:", errors[0].split("): ", 1)[-1])

@@ -8,9 +8,7 @@
 #include "SafeFile.h"
 #include "VtkFileWriters.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -126,16 +124,8 @@ std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int 
   const vtkSmartPointer<vtkUnstructuredGrid> sample = Piece(mesh, std::vector<int>(1, 0), 0);
   const ScratchFolder scratch;
   const fs::path summary = scratch.Path / fs::path(path).filename();
-  std::string error;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&error);
-  onError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    auto* message = static_cast<std::string*>(clientData);
-    if (message->empty() && callData)
-      *message = static_cast<const char*>(callData);
-  });
   vtkNew<vtkXMLPUnstructuredGridWriter> writer;
-  writer->AddObserver(vtkCommand::ErrorEvent, onError);
+  const FirstVtkError error(writer);
   writer->SetInputData(sample);
   writer->SetFileName(summary.string().c_str());
   writer->SetNumberOfPieces(pieces);
@@ -149,11 +139,9 @@ std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int 
   std::stringstream text;
   text << in.rdbuf();
   const std::string s = text.str();
-  if (!error.empty() || !in || s.find("</VTKFile>") == std::string::npos)
+  if (!error.Message().empty() || !in || s.find("</VTKFile>") == std::string::npos)
   {
-    const std::size_t at = error.find("): ");
-    throw WriteError("VTK's parallel writer failed" +
-      (error.empty() ? std::string() : ": " + error.substr(at == std::string::npos ? 0 : at + 3)));
+    throw WriteError("VTK's parallel writer failed" + (error.Message().empty() ? std::string() : ": " + error.Message()));
   }
   return s;
 }

@@ -65,24 +65,13 @@ vtkSmartPointer<vtkDataObject> WithoutStrings(vtkDataObject* data)
 template <typename Writer>
 void WriteThrough(Writer* writer, vtkDataObject* data)
 {
-  std::string error;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&error);
-  onError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    auto* message = static_cast<std::string*>(clientData);
-    if (message->empty() && callData)
-    {
-      *message = static_cast<const char*>(callData);
-    }
-  });
-  writer->AddObserver(vtkCommand::ErrorEvent, onError);
+  const FirstVtkError error(writer);
   vtkSmartPointer<vtkDataObject> clean = WithoutStrings(data);
   writer->SetInputDataObject(clean);
   writer->SetWriteToOutputString(true);
-  if (!writer->Write() || !error.empty())
+  if (!writer->Write() || !error.Message().empty())
   {
-    const std::size_t at = error.find("): ");
-    throw WriteError(error.empty() ? "VTK's writer failed" : error.substr(at == std::string::npos ? 0 : at + 3));
+    throw WriteError(error.Message().empty() ? "VTK's writer failed" : error.Message());
   }
 }
 
@@ -101,6 +90,25 @@ void WriteXml(vtkDataObject* data, std::ostream& out)
 }
 
 } // namespace
+
+FirstVtkError::FirstVtkError(vtkObject* object)
+{
+  this->Callback->SetClientData(&this->Text);
+  this->Callback->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* message = static_cast<std::string*>(clientData);
+    if (message->empty() && callData)
+    {
+      *message = static_cast<const char*>(callData);
+    }
+  });
+  object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+}
+
+std::string FirstVtkError::Message() const
+{
+  const std::size_t at = this->Text.find("): ");
+  return this->Text.substr(at == std::string::npos ? 0 : at + 3);
+}
 
 void WriteVtu(vtkDataObject* mesh, std::ostream& out)
 {

@@ -12,16 +12,33 @@
  * type (meshio) then read the file (`bytes(a).split(b"\\0")[:-1]` in Python).
  */
 
+#include "vtkCallbackCommand.h"
+#include "vtkNew.h"
+
 #include <ostream>
 #include <string>
 #include <vector>
 
 class vtkDataObject;
+class vtkObject;
 
 namespace labelmesher
 {
 namespace io
 {
+
+/// The first error event of a VTK object (a writer), kept from construction on.
+class FirstVtkError
+{
+public:
+  explicit FirstVtkError(vtkObject* object);
+  /// "" while none; else VTK's message without its log prefix ("ERROR: In file, line N ...): ").
+  std::string Message() const;
+
+private:
+  std::string Text;
+  vtkNew<vtkCallbackCommand> Callback;
+};
 
 void WriteVtu(vtkDataObject* mesh, std::ostream& out);
 void WriteLegacyVtk(vtkDataObject* mesh, std::ostream& out);

@@ -221,6 +221,12 @@ int vtkLabelMesher::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
+bool vtkLabelMesher::SharesOutAcrossProcesses() const
+{
+  return this->Distributed && this->Decimate && labelmesher::MPIRunning() && labelmesher::WorldSize() > 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
@@ -231,6 +237,24 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   {
     vtkErrorMacro("Missing input image or outputs.");
     return 0;
+  }
+  if (this->SharesOutAcrossProcesses())
+  {
+    // Every process must mesh the same (rank 0 joins their parts: parts of different images or
+    // parameters make no mesh), checked before anything that could stop one process and not
+    // the others (they would wait for it in the next step they take together).
+    std::ostringstream parameters;
+    parameters.precision(17);
+    parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
+               << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
+               << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
+    const std::string failure = labelmesher::FirstFailure(labelmesher::DifferenceFromRankZero(
+      labelmesher::ImageFingerprint(input, this->GetInputArrayToProcess(0, inputVector)) + parameters.str()));
+    if (!failure.empty())
+    {
+      vtkErrorMacro(<< failure << ".");
+      return 1;
+    }
   }
   if (this->Curve && GetImageDimension(input) != 2)
   {
@@ -372,17 +396,9 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
     this->Distributed && labelmesher::MPIRunning() ? labelmesher::WorldPartExchange() : nullptr;
   if (exchange)
   {
-    // Every process meshes the same (rank 0 joins their parts: parts of different images or
-    // parameters make no mesh), and goes on or none does (rank 0 would wait for the parts of
-    // one that stopped).
-    std::ostringstream parameters;
-    parameters.precision(17);
-    parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
-               << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << blockCells << ' '
-               << this->PartBlocks << ' ' << this->Order;
-    const std::string differs =
-      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input, labels) + parameters.str());
-    problem = labelmesher::FirstFailure(problem.empty() ? differs : problem);
+    // Every process goes on or none does: rank 0 would wait for the parts of one that stopped.
+    // (That all were given the same image and parameters RequestData checked first.)
+    problem = labelmesher::FirstFailure(problem);
   }
   if (!problem.empty())
   {

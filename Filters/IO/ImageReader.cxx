@@ -350,6 +350,7 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
 
 LabeledImage ReadLabeledImage(const std::string& path)
 {
+  AvoidITKThreadPool(); // a 3D Slicer segmentation is read through ITK too
   if (IsSegmentationFile(path))
   {
     return ReadSegmentation(path);

@@ -20,7 +20,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -55,13 +57,26 @@ public:
   fs::path Path;
 };
 
+/// More pieces than any run has processes: a "Process" array asking for more is not one.
+constexpr int kMostPieces = 1 << 16;
+
 /// The piece of every cell: its "Process" value, or 0 without that array.
+/// Throws WriteError for an array that is not one integer in [0, kMostPieces) a cell.
 std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh)
 {
   std::vector<int> piece(static_cast<std::size_t>(mesh->GetNumberOfCells()), 0);
   vtkDataArray* process = mesh->GetCellData()->GetArray(arrays::Process);
-  for (vtkIdType c = 0; process && c < mesh->GetNumberOfCells(); ++c)
-    piece[static_cast<std::size_t>(c)] = static_cast<int>(process->GetComponent(c, 0));
+  if (process == nullptr)
+    return piece;
+  if (process->GetNumberOfTuples() != mesh->GetNumberOfCells() || process->GetNumberOfComponents() != 1)
+    throw WriteError("its cell array Process is not one value a cell");
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const double value = process->GetComponent(c, 0);
+    if (!(value >= 0 && value < kMostPieces && value == std::floor(value)))
+      throw WriteError("its cell array Process holds " + std::to_string(value) + ", not a process rank");
+    piece[static_cast<std::size_t>(c)] = static_cast<int>(value);
+  }
   return piece;
 }
 
@@ -125,6 +140,9 @@ std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int 
   const ScratchFolder scratch;
   const fs::path summary = scratch.Path / fs::path(path).filename();
   vtkNew<vtkXMLPUnstructuredGridWriter> writer;
+  // No controller: under MPI VTK would give it the global one and wait in a collective step
+  // for processes that write nothing (this process writes every piece).
+  writer->SetController(nullptr);
   const FirstVtkError error(writer);
   writer->SetInputData(sample);
   writer->SetFileName(summary.string().c_str());
@@ -162,11 +180,14 @@ std::vector<std::string> PieceSources(const std::string& summary)
   return sources;
 }
 
-void WriteWhole(const std::string& path, const std::string& bytes)
+/// `bytes` into a temporary beside `path`, not yet under its name (SafeFile).
+std::unique_ptr<SafeFile> Written(const std::string& path, const std::string& bytes)
 {
-  SafeFile file(path);
-  file.Stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  file.Commit();
+  auto file = std::make_unique<SafeFile>(path);
+  file->Stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!file->Stream().flush())
+    file->Commit(); // a write failed (a full disk): Commit throws its reason and renames nothing
+  return file;
 }
 
 } // namespace
@@ -175,46 +196,44 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
 {
   if (mesh->GetNumberOfCells() == 0)
     throw WriteError("cannot write '" + path + "': the mesh has no cells");
-  const std::vector<int> pieceOfCell = PieceOfCells(mesh);
-  int pieces = 1;
-  for (int p : pieceOfCell)
-  {
-    if (p < 0)
-      throw WriteError("cannot write '" + path + "': a cell's process is negative");
-    pieces = std::max(pieces, p + 1);
-  }
   std::vector<std::string> written;
   try
   {
+    const std::vector<int> pieceOfCell = PieceOfCells(mesh);
+    const int pieces = 1 + *std::max_element(pieceOfCell.begin(), pieceOfCell.end());
     const std::string summary = SummaryText(mesh, path, pieces);
     const std::vector<std::string> sources = PieceSources(summary);
     if (static_cast<int>(sources.size()) != pieces)
       throw WriteError("VTK's summary lists " + std::to_string(sources.size()) + " pieces, not " +
         std::to_string(pieces));
+    // Every file is written to its temporary first and only then are they all renamed, the
+    // summary last: a failure while writing leaves the files of an earlier run as they were.
     const fs::path folder = fs::path(path).parent_path();
+    std::vector<std::unique_ptr<SafeFile>> files;
     for (int p = 0; p < pieces; ++p)
     {
-      const fs::path source = sources[static_cast<std::size_t>(p)];
-      const fs::path piecePath = folder / source;
-      // VTK 9.2 and later put the pieces in a folder of their own beside the summary.
-      if (source.has_parent_path() && fs::is_directory(folder.empty() ? fs::path(".") : folder))
-        fs::create_directories(piecePath.parent_path());
       std::ostringstream bytes;
       WriteVtu(Piece(mesh, pieceOfCell, p), bytes);
-      WriteWhole(piecePath.string(), bytes.str());
-      written.push_back(piecePath.string());
+      files.push_back(Written((folder / sources[static_cast<std::size_t>(p)]).string(), bytes.str()));
     }
-    WriteWhole(path, summary);
+    files.push_back(Written(path, summary));
+    for (const std::unique_ptr<SafeFile>& file : files)
+    {
+      file->Commit();
+      written.push_back(file->Target());
+    }
   }
   catch (const std::exception& e)
   {
-    for (const std::string& piece : written)
-      std::remove(piece.c_str());
+    // Only a rename that failed after all were written gets here with files renamed: take
+    // those back too, so that no summary of this run names a piece of another.
+    for (const std::string& file : written)
+      std::remove(file.c_str());
     const std::string reason = e.what();
     // SafeFile's errors name the file (a piece or the summary); the others are the summary's.
     throw WriteError(reason.rfind("cannot write '", 0) == 0 ? reason : "cannot write '" + path + "': " + reason);
   }
-  written.insert(written.begin(), path);
+  std::rotate(written.begin(), written.end() - 1, written.end()); // the summary first
   return written;
 }
 

@@ -92,6 +92,7 @@ void WriteXml(vtkDataObject* data, std::ostream& out)
 } // namespace
 
 FirstVtkError::FirstVtkError(vtkObject* object)
+  : Object(object)
 {
   this->Callback->SetClientData(&this->Text);
   this->Callback->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
@@ -101,7 +102,12 @@ FirstVtkError::FirstVtkError(vtkObject* object)
       *message = static_cast<const char*>(callData);
     }
   });
-  object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  this->Tag = object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+}
+
+FirstVtkError::~FirstVtkError()
+{
+  this->Object->RemoveObserver(this->Tag);
 }
 
 std::string FirstVtkError::Message() const

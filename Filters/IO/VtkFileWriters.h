@@ -32,11 +32,16 @@ class FirstVtkError
 {
 public:
   explicit FirstVtkError(vtkObject* object);
+  ~FirstVtkError();
+  FirstVtkError(const FirstVtkError&) = delete; // the callback holds this object's address
+  FirstVtkError& operator=(const FirstVtkError&) = delete;
   /// "" while none; else VTK's message without its log prefix ("ERROR: In file, line N ...): ").
   std::string Message() const;
 
 private:
   std::string Text;
+  vtkObject* Object;
+  unsigned long Tag;
   vtkNew<vtkCallbackCommand> Callback;
 };
 

@@ -153,7 +153,8 @@ def case_failing_process():
     out = path("mesh.msh")
     if os.path.exists(out):
         os.remove(out)
-    # Rank 1 cannot read its input: no file at all, the .pvtu's pieces neither.
+    # Rank 1 cannot read its input: no file at all, the .pvtu's pieces neither (a failure
+    # before meshing; a .pvtu that fails while written is TestvtkLabelMeshWriter's).
     summary = path("mesh.pvtu")
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "-o", summary), ":",
                   "-np", "1", EXE, *mesh_args(path("missing.nrrd"), out, "-o", summary)])

@@ -27,6 +27,12 @@ mesher = LabelMesher(Input=reader, BlockCells=block_cells)  # noqa: F821 (Distri
 mesher.Labels = ["POINTS", "Labels"]
 mesher.UpdatePipeline()
 mesh = servermanager.Fetch(mesher)
+# A filter that does not share its run out meshes the whole image once (for piece 0), not once a
+# process.
+initial = LabelOctreeMesher(Input=reader)  # noqa: F821
+initial.Labels = ["POINTS", "Labels"]
+initial.UpdatePipeline()
+initial_cells = servermanager.Fetch(initial).GetNumberOfCells()
 
 
 def field(name):
@@ -36,7 +42,7 @@ def field(name):
 
 def summary():
     if mesh.GetNumberOfCells() == 0:
-        return {"cells": 0}
+        return {"cells": 0, "initial_cells": initial_cells}
     points = vtk_to_numpy(mesh.GetPoints().GetData())
     materials = vtk_to_numpy(mesh.GetCellData().GetArray("Material"))
     connectivity = vtk_to_numpy(mesh.GetCells().GetConnectivityArray()).reshape(-1, 4)
@@ -46,6 +52,7 @@ def summary():
     process = mesh.GetCellData().GetArray("Process")
     return {
         "cells": len(cells),
+        "initial_cells": initial_cells,
         "cells_sha256": hashlib.sha256(repr(cells).encode()).hexdigest(),
         "processes_field": field("Processes"),
         "process_values": sorted(set(vtk_to_numpy(process).tolist())) if process is not None else None,

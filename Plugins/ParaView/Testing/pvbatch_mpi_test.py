@@ -2,7 +2,8 @@
 """Label Mesher in pvbatch under `mpirun -np 2` gives the same mesh as in one pvbatch process:
 every process reads the image with the plugin's reader, each meshes its parts, rank 0 joins
 them; the output fetched to rank 0 holds the same cells (compared by their corners' positions),
-cells of both processes (cell array Process), and every guarantee measured on it. A process given
+cells of both processes (cell array Process), and every guarantee measured on it; Label Octree
+Mesher, which does not share its run out, meshes the image once, not once a process. A process given
 another image than rank 0's makes the run refuse, in one error line naming it, with no mesh.
 
 usage: python3 pvbatch_mpi_test.py PVBATCH PLUGIN IMAGE BLOCK_CELLS WORKDIR
@@ -41,6 +42,8 @@ assert two["processes_field"] == [2.0], f"the run was not shared out: {two}"
 assert two["process_values"] == [0, 1], f"not both processes meshed cells: {two['process_values']}"
 assert (two["cells"], two["cells_sha256"]) == (one["cells"], one["cells_sha256"]), \
     "two processes gave another mesh than one"
+assert two["initial_cells"] == one["initial_cells"] > 0, \
+    f"Label Octree Mesher on two processes: {two['initial_cells']} cells, on one {one['initial_cells']}"
 for summary in (one, two):
     assert summary["minimum_angle"][0] >= summary["angle_bound"][0] - 1e-9, summary
     assert summary["inverted_cells"] == [0.0] and summary["bounds_certified"] == [1.0], summary

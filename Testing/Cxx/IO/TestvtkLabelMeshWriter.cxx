@@ -16,6 +16,7 @@
 #include "LabelMesherArrayNames.h"
 
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkPolyData.h"
@@ -327,6 +328,19 @@ TEST_F(WriterTest, AFailedPvtuLeavesNoPiece)
     { this->Path("taken.pvtu"), "taken_1.vtu" },
     { this->Path("full.pvtu"), "No space left on device" },
   };
+  // A Process array that holds no ranks.
+  const vtkSmartPointer<vtkUnstructuredGrid> fractional = WithProcesses(Mesher->GetOutput(), 3);
+  vtkDataArray* process = fractional->GetCellData()->GetArray(labelmesher::arrays::Process);
+  vtkNew<vtkDoubleArray> half;
+  half->DeepCopy(process);
+  half->SetName(labelmesher::arrays::Process);
+  half->SetValue(0, 0.5);
+  fractional->GetCellData()->AddArray(half);
+  std::vector<std::string> badErrors;
+  EXPECT_EQ(WriteGrid(fractional, this->Path("bad.pvtu"), badErrors), 0);
+  ASSERT_EQ(badErrors.size(), 1u);
+  EXPECT_NE(badErrors[0].find("not a process rank"), std::string::npos) << badErrors[0];
+  EXPECT_FALSE(fs::exists(this->Path("bad.pvtu")));
   for (const auto& [path, fragment] : cases)
   {
     const std::set<std::string> before = Listing(this->Folder);

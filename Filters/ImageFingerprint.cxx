@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The image's geometry in full precision and one pass of FNV-1a over its labels' bytes.
+// The image's geometry (extent, spacing, origin, direction) in full precision and one pass of
+// FNV-1a over its labels' bytes.
 #include "ImageFingerprint.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
 
 #include <cstdint>
 #include <sstream>
@@ -23,6 +25,8 @@ std::string ImageFingerprint(vtkImageData* image, vtkDataArray* labels)
     out << e << ' ';
   for (int a = 0; a < 3; ++a)
     out << image->GetSpacing()[a] << ' ' << image->GetOrigin()[a] << ' ';
+  for (int i = 0; i < 9; ++i) // the direction places the points as much as the origin does
+    out << image->GetDirectionMatrix()->GetData()[i] << ' ';
   if (labels != nullptr)
   {
     const auto* bytes = static_cast<const unsigned char*>(labels->GetVoidPointer(0));

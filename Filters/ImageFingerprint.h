@@ -5,7 +5,7 @@
 /**
  * @file ImageFingerprint.h
  * What decides a mesh about a label image, as text: its extent, spacing,
- * origin and a hash (FNV-1a) of its labels' bytes. The processes of a
+ * origin, direction and a hash (FNV-1a) of its labels' bytes. The processes of a
  * distributed run (the CLI under mpirun, vtkLabelMesher Distributed) compare
  * theirs with rank 0's (DifferenceFromRankZero, MPIPartExchange.h): parts of
  * different images would not join into one mesh. Not installed.

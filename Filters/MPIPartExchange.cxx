@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Parts as byte messages over MPI_COMM_WORLD: a length, then pieces of at most 1 GiB
-// (MPI counts are ints).
+// Parts as byte messages over a duplicate of MPI_COMM_WORLD: a length, then pieces of at
+// most 1 GiB (MPI counts are ints).
 #include "MPIPartExchange.h"
 
 #include "MPIStartup.h"
@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstdint>
 #include <deque>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,7 +24,6 @@ namespace labelmesher
 namespace
 {
 
-/// Apart from any other traffic on the world communicator (ParaView's, say).
 constexpr int kPartTag = 7311;
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
@@ -33,23 +33,36 @@ void Check(int status, const char* what)
     throw std::runtime_error(std::string("MPI could not ") + what);
 }
 
+/// The world's processes on a communicator of our own, so that no other
+/// traffic on the world's (ParaView's, say) can meet ours, whatever its tags.
+/// Made once, by the first collective call of this file, which every process
+/// makes at the same point; MPI frees it at its finalize.
+MPI_Comm Parts()
+{
+  static MPI_Comm communicator = [] {
+    MPI_Comm dup = MPI_COMM_NULL;
+    Check(MPI_Comm_dup(MPI_COMM_WORLD, &dup), "make a communicator for the parts");
+    return dup;
+  }();
+  return communicator;
+}
+
 /// The lowest failing rank's reason, the same on every rank (collective).
 std::string FirstFailureOf(const std::string& failure, int size)
 {
   int failed = failure.empty() ? 0 : 1;
   std::vector<int> all(static_cast<std::size_t>(size));
-  Check(MPI_Allgather(&failed, 1, MPI_INT, all.data(), 1, MPI_INT, MPI_COMM_WORLD), "gather the processes' state");
+  Check(MPI_Allgather(&failed, 1, MPI_INT, all.data(), 1, MPI_INT, Parts()), "gather the processes' state");
   const auto first = std::find(all.begin(), all.end(), 1);
   if (first == all.end())
     return {};
   const int root = static_cast<int>(first - all.begin());
   std::uint64_t length = failure.size();
-  Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, MPI_COMM_WORLD), "share a failure");
+  Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, Parts()), "share a failure");
   std::vector<char> reason(failure.begin(), failure.end());
   reason.resize(static_cast<std::size_t>(length));
-  Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD), "share a failure");
-  const std::string text(reason.begin(), reason.end());
-  return root == 0 ? text : "process " + std::to_string(root) + " of " + std::to_string(size) + ": " + text;
+  Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, Parts()), "share a failure");
+  return ProcessFailure(root, size, std::string(reason.begin(), reason.end()));
 }
 
 class MPIPartExchange final : public PartExchange
@@ -59,6 +72,7 @@ public:
     : RankOfThis(rank)
     , Size(size)
   {
+    Parts(); // collective the first time: made here, where every process constructs one
   }
   ~MPIPartExchange() override
   {
@@ -80,13 +94,13 @@ public:
     out.Length = static_cast<std::uint64_t>(message.size());
     out.Bytes = std::move(message);
     out.Requests.emplace_back();
-    Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, 0, kPartTag, MPI_COMM_WORLD, &out.Requests.back()),
+    Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, 0, kPartTag, Parts(), &out.Requests.back()),
       "send a part's length");
     for (std::size_t at = 0; at < out.Bytes.size(); at += kPiece)
     {
       const int n = static_cast<int>(std::min(kPiece, out.Bytes.size() - at));
       out.Requests.emplace_back();
-      Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, 0, kPartTag, MPI_COMM_WORLD, &out.Requests.back()),
+      Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, 0, kPartTag, Parts(), &out.Requests.back()),
         "send a part");
     }
   }
@@ -102,13 +116,13 @@ public:
   std::vector<char> Receive(int rank) override
   {
     std::uint64_t length = 0;
-    Check(MPI_Recv(&length, 1, MPI_UINT64_T, rank, kPartTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+    Check(MPI_Recv(&length, 1, MPI_UINT64_T, rank, kPartTag, Parts(), MPI_STATUS_IGNORE),
       "receive a part's length");
     std::vector<char> message(static_cast<std::size_t>(length));
     for (std::size_t at = 0; at < message.size(); at += kPiece)
     {
       const int n = static_cast<int>(std::min(kPiece, message.size() - at));
-      Check(MPI_Recv(message.data() + at, n, MPI_BYTE, rank, kPartTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+      Check(MPI_Recv(message.data() + at, n, MPI_BYTE, rank, kPartTag, Parts(), MPI_STATUS_IGNORE),
         "receive a part");
     }
     return message;
@@ -154,10 +168,28 @@ int WorldSize()
   return size;
 }
 
+namespace
+{
+/// The first of the launchers' variables `names` that is set, as a number (-1: none set).
+int LauncherVariable(std::initializer_list<const char*> names)
+{
+  for (const char* name : names)
+    if (const char* value = std::getenv(name))
+      return std::atoi(value);
+  return -1;
+}
+} // namespace
+
+int LaunchedRank()
+{
+  return std::max(0, LauncherVariable({ "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK" }));
+}
+
 bool LaunchedOnSeveralProcesses()
 {
-  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
-  return size != nullptr && std::atoi(size) > 1;
+  // PMIx gives no size variable of its own that every launcher sets; Open MPI's and MPICH's (Hydra,
+  // also Intel MPI's and srun --mpi=pmi2's) are read.
+  return LauncherVariable({ "OMPI_COMM_WORLD_SIZE", "PMI_SIZE" }) > 1;
 }
 
 std::string FirstFailure(const std::string& failure)
@@ -175,10 +207,10 @@ std::string DifferenceFromRankZero(const std::string& fingerprint)
   if (WorldSize() > 1)
   {
     std::uint64_t length = fingerprint.size();
-    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "share the run's parameters");
+    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, 0, Parts()), "share the run's parameters");
     std::vector<char> rankZero(fingerprint.begin(), fingerprint.end());
     rankZero.resize(static_cast<std::size_t>(length));
-    Check(MPI_Bcast(rankZero.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD),
+    Check(MPI_Bcast(rankZero.data(), static_cast<int>(length), MPI_CHAR, 0, Parts()),
       "share the run's parameters");
     if (std::string(rankZero.begin(), rankZero.end()) != fingerprint)
       return "it was given another image or other meshing parameters than process 0 (every process must mesh the "

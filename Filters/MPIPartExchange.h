@@ -4,8 +4,8 @@
 
 /**
  * @file MPIPartExchange.h
- * The streamed pipeline's parts between the processes of MPI_COMM_WORLD
- * (Streaming/PartExchange.h): what `mpirun -np N labelmesher mesh` runs on.
+ * The streamed pipeline's parts between the processes of MPI_COMM_WORLD, on
+ * a duplicate of it made once (Streaming/PartExchange.h): what `mpirun -np N labelmesher mesh` runs on.
  * Application plumbing, in library LabelMesherMPIStartup with MPI's start-up.
  */
 
@@ -22,10 +22,15 @@ class PartExchange;
 int WorldRank();
 int WorldSize();
 
-/// True when this process was started by Open MPI's mpirun with more than
-/// one process (OMPI_COMM_WORLD_SIZE > 1): the application then starts MPI
-/// and shares the run out. Read from the environment, before MPI starts.
+/// True when this process was started by an MPI launcher with more than one
+/// process (Open MPI's OMPI_COMM_WORLD_SIZE or MPICH's PMI_SIZE > 1): the
+/// application then starts MPI and shares the run out. Read from the
+/// environment, before MPI starts.
 bool LaunchedOnSeveralProcesses();
+
+/// This process's rank as its launcher set it in the environment (0 when
+/// none did), readable before MPI starts.
+int LaunchedRank();
 
 /// Collective over MPI_COMM_WORLD: every process passes what stopped it ("":
 /// nothing) and all get the same answer, "" when none failed, else the lowest

@@ -304,8 +304,7 @@ int Run(const Arguments& args)
 /// leave help, version and usage errors to it.
 bool FirstOfItsRun()
 {
-  const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
-  return rank == nullptr || std::string(rank) == "0";
+  return labelmesher::LaunchedRank() == 0;
 }
 
 } // namespace

@@ -180,6 +180,44 @@ std::vector<std::string> PieceSources(const std::string& summary)
   return sources;
 }
 
+/// The pieces an earlier summary at `path` names (none when there is none or
+/// it cannot be read: it only serves to tidy up).
+std::vector<std::string> EarlierPieces(const std::string& path)
+{
+  std::error_code error;
+  if (!fs::is_regular_file(path, error) || fs::file_size(path, error) > (std::uintmax_t(1) << 24))
+    return {};
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return PieceSources(text.str());
+}
+
+/// The earlier run's pieces that this run's summary no longer names: those
+/// of piece numbers beyond this run's, named as VTK names them (`sources`'
+/// first name with another number). Only such files are removed: an earlier
+/// summary naming anything else (edited by hand, say) loses nothing.
+void RemoveStalePieces(const fs::path& folder, const std::vector<std::string>& earlier,
+  const std::vector<std::string>& sources)
+{
+  const std::string first = sources.front(), suffix = "0.vtu";
+  if (first.size() < suffix.size() || first.compare(first.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return;
+  const std::string stem = first.substr(0, first.size() - suffix.size());
+  for (const std::string& name : earlier)
+  {
+    if (name.size() <= stem.size() + 4 || name.compare(0, stem.size(), stem) != 0 ||
+      name.compare(name.size() - 4, 4, ".vtu") != 0)
+      continue;
+    const std::string number = name.substr(stem.size(), name.size() - stem.size() - 4);
+    if (number.find_first_not_of("0123456789") != std::string::npos || (number.size() > 1 && number[0] == '0') ||
+      number.size() > 6 || std::stoi(number) < static_cast<int>(sources.size()))
+      continue;
+    std::error_code ignored; // a piece left over is named by no summary: untidy, not wrong
+    fs::remove(folder / name, ignored);
+  }
+}
+
 /// `bytes` into a temporary beside `path`, not yet under its name (SafeFile).
 std::unique_ptr<SafeFile> Written(const std::string& path, const std::string& bytes)
 {
@@ -209,6 +247,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
     // Every file is written to its temporary first and only then are they all renamed, the
     // summary last: a failure while writing leaves the files of an earlier run as they were.
     const fs::path folder = fs::path(path).parent_path();
+    const std::vector<std::string> earlier = EarlierPieces(path);
     std::vector<std::unique_ptr<SafeFile>> files;
     for (int p = 0; p < pieces; ++p)
     {
@@ -222,6 +261,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
       file->Commit();
       written.push_back(file->Target());
     }
+    RemoveStalePieces(folder, earlier, sources);
   }
   catch (const std::exception& e)
   {

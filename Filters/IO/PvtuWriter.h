@@ -12,7 +12,9 @@
  *
  * Every file goes through SafeFile (whole or not at all); the summary is
  * written last, so it never names a piece that is not there, and when any
- * file fails, the pieces already written are removed again.
+ * file fails, the pieces already written are removed again. Once all are
+ * written, the pieces of an earlier run on more processes that the new
+ * summary no longer names are removed (only names VTK gives pieces).
  */
 
 #include <string>

@@ -178,6 +178,18 @@ def case_failing_process():
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
                   "-np", "1", EXE, *mesh_args(other_image, out)])
     expect_one_line_failure(result, "process 1 of 2: it was given another image", out)
+    # Processes other than the first leave usage errors and --version to it, whichever
+    # launcher's variables name their rank (Open MPI's, or MPICH's and Intel MPI's PMI_RANK).
+    for variable in ("OMPI_COMM_WORLD_RANK", "PMI_RANK"):
+        for rank, speaks in (("1", False), ("0", True)):
+            env = {k: v for k, v in ENV.items() if k not in ("OMPI_COMM_WORLD_RANK", "PMI_RANK")}
+            env[variable] = rank
+            bad = subprocess.run([EXE, "mesh", image, "--no-such-option"], capture_output=True, text=True,
+                                 timeout=60, env=env)
+            assert bad.returncode == 2, (variable, rank, bad.returncode)
+            assert bool(bad.stderr.strip()) == speaks, (variable, rank, bad.stderr)
+            version = subprocess.run([EXE, "--version"], capture_output=True, text=True, timeout=60, env=env)
+            assert version.returncode == 0 and bool(version.stdout.strip()) == speaks, (variable, rank, version.stdout)
     # Nothing to share out without decimation.
     result = run([*MPIRUN, "-np", "2", EXE, "mesh", image, "-o", out, "--no-decimate"])
     expect_one_line_failure(result, "--no-decimate runs on one process", out)

@@ -4,8 +4,11 @@
 // through permutation (a single slice) and resampling (anisotropic spacing).
 #include "LabelImageConversion.h"
 
+#include "ImageFingerprint.h"
+
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
@@ -13,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <iterator>
 #include <string>
 
 namespace labelmesher
@@ -85,6 +90,30 @@ TEST(LabelImageConversion, ResamplingAndPermutationKeepLabelsAndWidth)
   EXPECT_EQ(cubes.BytesPerLabel(), 1);
   for (int k = 0; k < 6; ++k)
     EXPECT_EQ(cubes.At(1, 0, k), 10 + 1 + 4 * (k / 2)) << k;
+}
+
+TEST(ImageFingerprint, ChangesWithEveryThingThatPlacesOrLabelsTheMesh)
+{
+  // The processes of a distributed run compare fingerprints: two images that
+  // would mesh differently must not share one.
+  const auto reference = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
+  const std::string print = ImageFingerprint(reference, reference->GetPointData()->GetScalars());
+  const auto same = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
+  EXPECT_EQ(ImageFingerprint(same, same->GetPointData()->GetScalars()), print);
+
+  const std::function<void(vtkImageData*)> changes[] = {
+    [](vtkImageData* i) { i->GetPointData()->GetScalars()->SetComponent(5, 0, 0); }, // was 2
+    [](vtkImageData* i) { i->SetOrigin(0, 0, 1e-9); },
+    [](vtkImageData* i) { i->SetSpacing(1, 1, 2); },
+    [](vtkImageData* i) { i->SetExtent(1, 4, 0, 2, 0, 1); },
+    [](vtkImageData* i) { i->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1); },
+  };
+  for (std::size_t k = 0; k < std::size(changes); ++k)
+  {
+    const auto changed = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
+    changes[k](changed);
+    EXPECT_NE(ImageFingerprint(changed, changed->GetPointData()->GetScalars()), print) << "change " << k;
+  }
 }
 
 } // namespace

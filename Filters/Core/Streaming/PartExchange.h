@@ -17,6 +17,13 @@
 namespace labelmesher
 {
 
+/// A failure on process `rank` of `ranks` as the run reports it: "process R
+/// of N: reason", or the reason alone from rank 0 (the process the user sees).
+inline std::string ProcessFailure(int rank, int ranks, const std::string& reason)
+{
+  return rank == 0 ? reason : "process " + std::to_string(rank) + " of " + std::to_string(ranks) + ": " + reason;
+}
+
 class PartExchange
 {
 public:
@@ -33,7 +40,7 @@ public:
   virtual std::vector<char> Receive(int rank) = 0;
   /// Every rank, at the same point: each passes what stopped it ("": nothing)
   /// and all get "" when none failed, else the lowest failing rank's reason
-  /// ("process R of N: " before it unless R is 0).
+  /// (ProcessFailure).
   virtual std::string Agree(const std::string& failure) = 0;
 };
 

@@ -750,8 +750,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         if (message.Failed)
         {
           failed[static_cast<std::size_t>(owner)] = 1;
-          throw std::runtime_error("process " + std::to_string(owner) + " of " + std::to_string(ranks) + ": " +
-            message.Reason);
+          throw std::runtime_error(ProcessFailure(owner, ranks, message.Reason));
         }
         part = std::move(message.Part);
         first = starts[pending + 1];

@@ -318,6 +318,23 @@ TEST_F(WriterTest, PvtuHasOnePiecePerProcess)
   EXPECT_FALSE(fs::exists(this->Path("one_1.vtu")));
 }
 
+TEST_F(WriterTest, ARewriteOnFewerProcessesLeavesNoStalePiece)
+{
+  vtkUnstructuredGrid* mesh = Mesher->GetOutput();
+  std::vector<std::string> errors;
+  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 4), this->Path("m.pvtu"), errors), 1);
+  // A file the earlier summary did not name, and one named like a piece but not a piece's number.
+  std::ofstream(this->Path("m_2.vtu.bak")) << "kept";
+  std::ofstream(this->Path("m_x.vtu")) << "kept";
+  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 2), this->Path("m.pvtu"), errors), 1) << (errors.empty() ? "" : errors[0]);
+  EXPECT_EQ(Listing(this->Folder),
+    (std::set<std::string>{ "m.pvtu", "m_0.vtu", "m_1.vtu", "m_2.vtu.bak", "m_x.vtu" }));
+  vtkNew<vtkXMLPUnstructuredGridReader> whole;
+  whole->SetFileName(this->Path("m.pvtu").c_str());
+  whole->Update();
+  EXPECT_EQ(whole->GetOutput()->GetNumberOfCells(), mesh->GetNumberOfCells());
+}
+
 TEST_F(WriterTest, AFailedPvtuLeavesNoPiece)
 {
   const vtkSmartPointer<vtkUnstructuredGrid> mesh = WithProcesses(Mesher->GetOutput(), 3);

@@ -63,7 +63,7 @@ public:
     Run.Failures[RankOfThis] = failure;
     for (const auto& [rank, reason] : Run.Failures)
       if (!reason.empty())
-        return rank == 0 ? reason : "process " + std::to_string(rank) + " of " + std::to_string(Size) + ": " + reason;
+        return ProcessFailure(rank, Size, reason);
     return {};
   }
 

@@ -43,30 +43,43 @@ bool IsAxisRectangle(const ConvexPiece& piece, Point3& lo, Point3& hi)
   return flat == 1 && fromQ0 == 1 && fromQ2 == 1;
 }
 
-double DistanceTo(const Point3& p, const ConvexPiece& piece)
+/// A piece the element is measured against, with its box when it is an
+/// axis-aligned rectangle (voxel faces are): then the distance to that box
+/// (flat along one axis) is the distance, at a tenth of the cost. Found once
+/// per piece: the subdivision measures the same pieces again and again.
+struct Target
 {
-  double d2 = 0.0;
+  ConvexPiece Piece;
+  bool IsBox = false;
+  Point3 Lo{}, Hi{};
+
+  explicit Target(const ConvexPiece& piece)
+    : Piece(piece)
+  {
+    IsBox = piece.Count == 4 && IsAxisRectangle(piece, Lo, Hi); // after Lo and Hi are initialised
+  }
+};
+
+double SquaredDistanceTo(const Point3& p, const Target& target)
+{
+  const ConvexPiece& piece = target.Piece;
+  if (target.IsBox)
+    return SquaredDistanceToBox(p, target.Lo, target.Hi);
   switch (piece.Count)
   {
     case 2:
-      d2 = SquaredDistanceToSegment(p, piece.Points[0], piece.Points[1]);
-      break;
+      return SquaredDistanceToSegment(p, piece.Points[0], piece.Points[1]);
     case 3:
-      d2 = SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]);
-      break;
+      return SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]);
     default:
-    {
-      // Voxel faces are axis-aligned rectangles: then the distance to their
-      // box (flat along one axis) is the distance, at a tenth of the cost.
-      Point3 lo, hi;
-      if (IsAxisRectangle(piece, lo, hi))
-        d2 = SquaredDistanceToBox(p, lo, hi);
-      else
-        d2 = std::min(SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]),
-          SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[2], piece.Points[3]));
-    }
+      return std::min(SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[1], piece.Points[2]),
+        SquaredDistanceToTriangle(p, piece.Points[0], piece.Points[2], piece.Points[3]));
   }
-  return std::sqrt(d2);
+}
+
+double DistanceTo(const Point3& p, const Target& target)
+{
+  return std::sqrt(SquaredDistanceTo(p, target));
 }
 
 /// The axis along which all points of `piece` share one coordinate, or -1.
@@ -215,10 +228,11 @@ std::vector<ConvexPiece> Subdivide(const ConvexPiece& e)
 
 /// The pieces that can matter for `element`: those within h of some point of
 /// it, hence within h + rho of its vertex centroid c (rho: the farthest vertex
-/// from c), nearest to c first. A generous margin keeps every piece round-off
-/// could make matter, so the verdict is the one the whole list gives, only
-/// cheaper to reach.
-void Cull(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h, std::vector<ConvexPiece>& out)
+/// from c), with their squared distances to c. A generous margin keeps every
+/// piece round-off could make matter, so the verdict is the one the whole
+/// list gives, only cheaper to reach.
+void Cull(const ConvexPiece& element, const std::vector<Target>& targets, double h,
+  std::vector<std::pair<double, std::size_t>>& near)
 {
   Point3 c{ 0.0, 0.0, 0.0 };
   for (int i = 0; i < element.Count; ++i)
@@ -228,64 +242,76 @@ void Cull(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, do
   for (int i = 0; i < element.Count; ++i)
     rho = std::max(rho, Distance(c, element.Points[i]));
   const double reach = h + rho + 1e-6;
-  std::vector<std::pair<double, std::size_t>> near;
-  for (std::size_t p = 0; p < pieces.size(); ++p)
+  near.clear();
+  for (std::size_t t = 0; t < targets.size(); ++t)
   {
-    const double d = DistanceTo(c, pieces[p]);
-    if (d <= reach)
-      near.emplace_back(d, p);
+    const double d2 = SquaredDistanceTo(c, targets[t]);
+    if (d2 <= reach * reach)
+      near.emplace_back(d2, t);
   }
-  std::sort(near.begin(), near.end());
-  out.clear();
-  for (const auto& entry : near)
-    out.push_back(pieces[entry.second]);
 }
 
-/// One piece within h of every vertex: then of the whole element (the
+/// The piece is within h of every vertex: then of the whole element (the
 /// distance to a convex piece is convex).
-bool OnePieceCovers(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces, double h)
+bool Covers(const Target& target, const ConvexPiece& element, double h)
 {
-  for (const ConvexPiece& piece : pieces)
-  {
-    double farthest = 0.0;
-    for (int i = 0; i < element.Count && farthest <= h + kRoundOff; ++i)
-      farthest = std::max(farthest, DistanceTo(element.Points[i], piece));
-    if (farthest <= h + kRoundOff)
-      return true;
-  }
-  return false;
+  for (int i = 0; i < element.Count; ++i)
+    if (DistanceTo(element.Points[i], target) > h + kRoundOff)
+      return false;
+  return true;
 }
 
-bool Within(const ConvexPiece& element, const std::vector<ConvexPiece>& allPieces, double h, int depth)
+bool Within(const ConvexPiece& element, const std::vector<Target>& allTargets, double h, int depth)
 {
   // Most of the time is spent on elements among many far pieces (a large
   // merged face, a large leaf): cull before looking closer, and try the
-  // nearest pieces first, which usually prove the element at once.
-  std::vector<ConvexPiece> culled;
-  const bool cull = allPieces.size() > 8;
+  // nearest piece, which usually proves the element at once, before sorting
+  // the others by distance.
+  std::vector<Target> culled;
+  const bool cull = allTargets.size() > 8;
   if (cull)
-    Cull(element, allPieces, h, culled);
-  const std::vector<ConvexPiece>& pieces = cull ? culled : allPieces;
-  if (pieces.empty())
+  {
+    std::vector<std::pair<double, std::size_t>> near;
+    Cull(element, allTargets, h, near);
+    if (near.empty())
+      return false;
+    const auto nearest = std::min_element(near.begin(), near.end());
+    if (Covers(allTargets[nearest->second], element, h))
+      return true;
+    std::sort(near.begin(), near.end());
+    culled.reserve(near.size());
+    for (const auto& entry : near)
+      culled.push_back(allTargets[entry.second]);
+  }
+  const std::vector<Target>& targets = cull ? culled : allTargets;
+  if (targets.empty())
     return false;
-  if (OnePieceCovers(element, pieces, h))
-    return true;
+  for (std::size_t t = cull ? 1 : 0; t < targets.size(); ++t) // culled: the first, the nearest, failed above
+    if (Covers(targets[t], element, h))
+      return true;
   double worstVertex = 0.0;
   for (int i = 0; i < element.Count; ++i)
   {
     double best = INFINITY;
-    for (const ConvexPiece& piece : pieces)
-      best = std::min(best, DistanceTo(element.Points[i], piece));
-    worstVertex = std::max(worstVertex, best);
+    for (const Target& target : targets)
+      best = std::min(best, SquaredDistanceTo(element.Points[i], target));
+    worstVertex = std::max(worstVertex, std::sqrt(best));
   }
   if (worstVertex > h + kRoundOff)
     return false;
-  if (worstVertex < kRoundOff && (CoveredExactly(element, pieces) || CoveredExactlyOnLine(element, pieces)))
-    return true;
+  if (worstVertex < kRoundOff)
+  {
+    std::vector<ConvexPiece> pieces;
+    pieces.reserve(targets.size());
+    for (const Target& target : targets)
+      pieces.push_back(target.Piece);
+    if (CoveredExactly(element, pieces) || CoveredExactlyOnLine(element, pieces))
+      return true;
+  }
   if (depth == 0)
     return false;
   for (const ConvexPiece& child : Subdivide(element))
-    if (!Within(child, pieces, h, depth - 1))
+    if (!Within(child, targets, h, depth - 1))
       return false;
   return true;
 }
@@ -296,7 +322,8 @@ bool WithinDistance(const ConvexPiece& element, const std::vector<ConvexPiece>& 
 {
   if (pieces.empty())
     return false;
-  return Within(element, pieces, h, maxDepth);
+  const std::vector<Target> targets(pieces.begin(), pieces.end());
+  return Within(element, targets, h, maxDepth);
 }
 
 } // namespace labelmesher

@@ -527,6 +527,15 @@ int OwnerOf(std::size_t part, std::size_t parts, int ranks)
   return static_cast<int>((2 * part + 1) * static_cast<std::size_t>(ranks) / (2 * parts));
 }
 
+/// How many processes mesh at least one of `parts` parts (the others idle).
+std::size_t ProcessesWithParts(std::size_t parts, int ranks)
+{
+  std::size_t owners = 0;
+  for (std::size_t p = 0; p < parts; ++p)
+    owners += p == 0 || OwnerOf(p, parts, ranks) != OwnerOf(p - 1, parts, ranks); // consecutive parts to a process
+  return owners;
+}
+
 PartMap MapOfParts(const std::vector<OctreeLeaf>& leaves, const std::vector<std::size_t>& starts, int dimension,
   int depth, int ranks)
 {
@@ -672,7 +681,6 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   // leaf). Every process refines it, finds the same, and with several
   // processes the same parts; they go on only if all got this far.
   const int ranks = exchange != nullptr ? exchange->Ranks() : 1;
-  result.Streaming.Processes = static_cast<std::size_t>(ranks);
   RunPlan plan;
   if (ranks > 1)
   {
@@ -698,6 +706,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   const std::vector<OctreeLeaf>& leaves = plan.Octree.Leaves;
   const std::vector<std::size_t>& starts = plan.Starts;
   const std::vector<VoxelBox>& near = plan.Near;
+  result.Streaming.Processes = ranks > 1 ? ProcessesWithParts(starts.size() - 1, ranks) : 1;
   const ImageBoundary& boundary = *plan.Boundary;
   const int depth = plan.Octree.Depth;
   result.Streaming.Leaves = leaves.size();

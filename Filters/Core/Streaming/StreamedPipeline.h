@@ -86,7 +86,7 @@ struct StreamingCounts
 {
   std::size_t Leaves = 0;
   std::size_t Parts = 0;
-  std::size_t Processes = 1; ///< that meshed parts (the exchange's ranks)
+  std::size_t Processes = 1; ///< that meshed parts (with more processes than parts, the others idle)
   std::size_t Blocks = 0;
   std::size_t LargestBlockCells = 0;  ///< initial cells of the largest block
   std::size_t ForegroundCellsBefore = 0; ///< initial cells of a label other than 0

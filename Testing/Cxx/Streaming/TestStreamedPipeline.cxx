@@ -245,6 +245,7 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfProcesses)
       EXPECT_TRUE(shared.HoldsMesh);
       EXPECT_TRUE(SameMesh(one.Decimated.Mesh, shared.Decimated.Mesh)) << ranks << " processes, dimension " << dimension;
       EXPECT_EQ(shared.Streaming.Parts, one.Streaming.Parts);
+      EXPECT_EQ(shared.Streaming.Processes, std::min<std::size_t>(ranks, one.Streaming.Parts)) << ranks;
       EXPECT_EQ(shared.Streaming.Blocks, one.Streaming.Blocks);
       EXPECT_EQ(shared.Decimated.Counts.Merges, one.Decimated.Counts.Merges);
     }
@@ -264,7 +265,9 @@ TEST(StreamedPipeline, OnePartIsTheBlocksOfOneProcess)
   const StreamedResult one = MeshAndDecimate(random.Image, mesher, decimation, streaming);
   EXPECT_EQ(one.Streaming.Parts, 1u);
   ASSERT_GT(one.Streaming.Blocks, 2u);
-  EXPECT_TRUE(SameMesh(one.Decimated.Mesh, MeshOnRanks(random.Image, mesher, decimation, streaming, 3).Decimated.Mesh));
+  const StreamedResult three = MeshOnRanks(random.Image, mesher, decimation, streaming, 3);
+  EXPECT_TRUE(SameMesh(one.Decimated.Mesh, three.Decimated.Mesh));
+  EXPECT_EQ(three.Streaming.Processes, 1u); // the two others had no part
   streaming.PartBlocks = 1000;
   EXPECT_TRUE(SameMesh(one.Decimated.Mesh, MeshAndDecimate(random.Image, mesher, decimation, streaming).Decimated.Mesh));
 }

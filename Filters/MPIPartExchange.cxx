@@ -25,6 +25,7 @@ namespace
 {
 
 constexpr int kPartTag = 7311;
+constexpr int kNoticeTag = 7312;
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
 void Check(int status, const char* what)
@@ -105,6 +106,29 @@ public:
     }
   }
 
+  void Notify(const std::string& reason) override
+  {
+    Outgoing& out = Pending.emplace_back();
+    out.Bytes.assign(reason.begin(), reason.end());
+    out.Requests.emplace_back();
+    Check(MPI_Isend(out.Bytes.data(), static_cast<int>(out.Bytes.size()), MPI_CHAR, 0, kNoticeTag, Parts(),
+            &out.Requests.back()),
+      "send a failure");
+  }
+
+  int PollNotice(std::string& reason) override
+  {
+    int arrived = 0;
+    MPI_Status status;
+    Check(MPI_Iprobe(MPI_ANY_SOURCE, kNoticeTag, Parts(), &arrived, &status), "look for failures");
+    if (!arrived)
+      return -1;
+    reason = ReceiveNotice(status.MPI_SOURCE);
+    return status.MPI_SOURCE;
+  }
+
+  void TakeNotice(int rank) override { ReceiveNotice(rank); }
+
   void Flush() override
   {
     for (Outgoing& out : Pending)
@@ -131,6 +155,18 @@ public:
   std::string Agree(const std::string& failure) override { return FirstFailureOf(failure, Size); }
 
 private:
+  std::string ReceiveNotice(int rank)
+  {
+    MPI_Status status;
+    Check(MPI_Probe(rank, kNoticeTag, Parts(), &status), "receive a failure");
+    int length = 0;
+    Check(MPI_Get_count(&status, MPI_CHAR, &length), "receive a failure");
+    std::string reason(static_cast<std::size_t>(std::max(length, 0)), '\0');
+    Check(MPI_Recv(reason.data(), length, MPI_CHAR, rank, kNoticeTag, Parts(), MPI_STATUS_IGNORE),
+      "receive a failure");
+    return reason;
+  }
+
   struct Outgoing
   {
     std::uint64_t Length = 0;
@@ -180,16 +216,21 @@ int LauncherVariable(std::initializer_list<const char*> names)
 }
 } // namespace
 
+// Open MPI's variables and MPICH's (Hydra; also Intel MPI's and srun --mpi=pmi2's). PMIx sets no
+// size variable every launcher shares, so its rank is not read either: size and rank come in pairs.
 int LaunchedRank()
 {
-  return std::max(0, LauncherVariable({ "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK" }));
+  return std::max(0, LauncherVariable({ "OMPI_COMM_WORLD_RANK", "PMI_RANK" }));
+}
+
+int LaunchedProcesses()
+{
+  return std::max(1, LauncherVariable({ "OMPI_COMM_WORLD_SIZE", "PMI_SIZE" }));
 }
 
 bool LaunchedOnSeveralProcesses()
 {
-  // PMIx gives no size variable of its own that every launcher sets; Open MPI's and MPICH's (Hydra,
-  // also Intel MPI's and srun --mpi=pmi2's) are read.
-  return LauncherVariable({ "OMPI_COMM_WORLD_SIZE", "PMI_SIZE" }) > 1;
+  return LaunchedProcesses() > 1;
 }
 
 std::string FirstFailure(const std::string& failure)

@@ -28,21 +28,22 @@ int WorldSize();
 /// environment, before MPI starts.
 bool LaunchedOnSeveralProcesses();
 
-/// This process's rank as its launcher set it in the environment (0 when
-/// none did), readable before MPI starts.
+/// This process's rank and the number of processes as its launcher set them
+/// in the environment (0 and 1 when none did), readable before MPI starts.
 int LaunchedRank();
+int LaunchedProcesses();
 
-/// Collective over MPI_COMM_WORLD: every process passes what stopped it ("":
+/// Collective over the world's processes: every process passes what stopped it ("":
 /// nothing) and all get the same answer, "" when none failed, else the lowest
 /// failing rank's reason ("process R of N: " before it unless R is 0). So that
 /// no process waits for one that has given up. One process: `failure` itself.
 std::string FirstFailure(const std::string& failure);
 
-/// Collective over MPI_COMM_WORLD: "" when `fingerprint` (what decides the
+/// Collective over the world's processes: "" when `fingerprint` (what decides the
 /// mesh: the image and the parameters) is rank 0's, else a reason. One process: "".
 std::string DifferenceFromRankZero(const std::string& fingerprint);
 
-/// An exchange over MPI_COMM_WORLD when it has more than one process, else
+/// An exchange between the world's processes when there are several, else
 /// null (one process needs none).
 std::unique_ptr<PartExchange> WorldPartExchange();
 

@@ -177,6 +177,15 @@ int Run(const Arguments& args)
   if (distributed)
   {
     labelmesher::StartMPI();
+    if (labelmesher::WorldSize() == 1)
+    {
+      // Launched as several processes, but each one's MPI starts alone: labelmesher's MPI is not
+      // the launcher's (MPICH's mpiexec running an Open MPI build, say). Each would mesh the whole
+      // image and write the same files.
+      throw RunError("launched as " + std::to_string(labelmesher::LaunchedProcesses()) +
+        " processes, but this process's MPI sees only itself: run it with the mpirun of the MPI it was built "
+        "with");
+    }
   }
   const bool root = labelmesher::WorldRank() == 0;
   PreparedRun prepared;

@@ -185,7 +185,9 @@ std::vector<std::string> PieceSources(const std::string& summary)
 std::vector<std::string> EarlierPieces(const std::string& path)
 {
   std::error_code error;
-  if (!fs::is_regular_file(path, error) || fs::file_size(path, error) > (std::uintmax_t(1) << 24))
+  // A summary reached through a link names pieces beside its target, not beside the link: left alone.
+  if (fs::is_symlink(path, error) || !fs::is_regular_file(path, error) ||
+    fs::file_size(path, error) > (std::uintmax_t(1) << 24))
     return {};
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
@@ -261,7 +263,14 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
       file->Commit();
       written.push_back(file->Target());
     }
-    RemoveStalePieces(folder, earlier, sources);
+    try
+    {
+      RemoveStalePieces(folder, earlier, sources);
+    }
+    catch (...)
+    {
+      // Tidying only: the run's files are whole and in place, and must stay.
+    }
   }
   catch (const std::exception& e)
   {

@@ -190,6 +190,12 @@ def case_failing_process():
             assert bool(bad.stderr.strip()) == speaks, (variable, rank, bad.stderr)
             version = subprocess.run([EXE, "--version"], capture_output=True, text=True, timeout=60, env=env)
             assert version.returncode == 0 and bool(version.stdout.strip()) == speaks, (variable, rank, version.stdout)
+    # A launcher's variables say several processes, but MPI starts this one alone (a launcher of
+    # another MPI): refused, rather than each process meshing and writing the whole.
+    env = {k: v for k, v in ENV.items() if not k.startswith("OMPI_COMM_WORLD")}
+    env.update(PMI_SIZE="2", PMI_RANK="0")
+    alone = subprocess.run([EXE, *mesh_args(image, out)], capture_output=True, text=True, timeout=120, env=env)
+    expect_one_line_failure(alone, "launched as 2 processes, but this process's MPI sees only itself", out)
     # Nothing to share out without decimation.
     result = run([*MPIRUN, "-np", "2", EXE, "mesh", image, "-o", out, "--no-decimate"])
     expect_one_line_failure(result, "--no-decimate runs on one process", out)

@@ -228,9 +228,11 @@ std::vector<ConvexPiece> Subdivide(const ConvexPiece& e)
 
 /// The pieces that can matter for `element`: those within h of some point of
 /// it, hence within h + rho of its vertex centroid c (rho: the farthest vertex
-/// from c), with their squared distances to c. A generous margin keeps every
-/// piece round-off could make matter, so the verdict is the one the whole
-/// list gives, only cheaper to reach.
+/// from c), with their distances to c. A generous margin keeps every piece
+/// round-off could make matter, so the verdict is the one the whole list
+/// gives, only cheaper to reach. (Distances, not their squares: the same
+/// pieces in the same order as before the pieces were prepared, since the
+/// order reaches the sums of CoveredExactly.)
 void Cull(const ConvexPiece& element, const std::vector<Target>& targets, double h,
   std::vector<std::pair<double, std::size_t>>& near)
 {
@@ -245,9 +247,9 @@ void Cull(const ConvexPiece& element, const std::vector<Target>& targets, double
   near.clear();
   for (std::size_t t = 0; t < targets.size(); ++t)
   {
-    const double d2 = SquaredDistanceTo(c, targets[t]);
-    if (d2 <= reach * reach)
-      near.emplace_back(d2, t);
+    const double d = DistanceTo(c, targets[t]);
+    if (d <= reach)
+      near.emplace_back(d, t);
   }
 }
 
@@ -256,7 +258,7 @@ void Cull(const ConvexPiece& element, const std::vector<Target>& targets, double
 bool Covers(const Target& target, const ConvexPiece& element, double h)
 {
   for (int i = 0; i < element.Count; ++i)
-    if (DistanceTo(element.Points[i], target) > h + kRoundOff)
+    if (!(DistanceTo(element.Points[i], target) <= h + kRoundOff)) // a NaN distance proves nothing
       return false;
   return true;
 }

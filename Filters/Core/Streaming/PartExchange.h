@@ -7,7 +7,8 @@
  * How the parts of the block-streamed pipeline (StreamedPipeline.h) reach the
  * process that joins them: each process meshes the parts it owns and every
  * process other than rank 0 hands its parts, as bytes (MeshPart.h), to rank 0,
- * in order. The core knows processes only through this: the MPI one is the
+ * in order; one that fails also sends a notice rank 0 looks for between its
+ * own blocks, so that a failure ends the run early. The core knows processes only through this: the MPI one is the
  * application's (Filters/MPIPartExchange.h); tests run the ranks in one process.
  */
 
@@ -38,6 +39,17 @@ public:
   virtual void Flush() {}
   /// On rank 0: the next message from `rank` (messages of one rank arrive in the order sent).
   virtual std::vector<char> Receive(int rank) = 0;
+  /// From a rank other than 0 that failed, before it sends its failure in
+  /// place of its next part: a notice rank 0 sees as soon as it looks
+  /// (PollNotice), not only once it reaches that part.
+  virtual void Notify(const std::string& reason) = 0;
+  /// On rank 0, without waiting: a rank whose notice has arrived, with its
+  /// reason, or -1. Each notice is returned once.
+  virtual int PollNotice(std::string& reason) = 0;
+  /// On rank 0: waits for `rank`'s notice, which it sent (its failure arrived
+  /// in place of a part) and PollNotice has not returned. Every notice must
+  /// be taken: the rank waits until it is.
+  virtual void TakeNotice(int rank) = 0;
   /// Every rank, at the same point: each passes what stopped it ("": nothing)
   /// and all get "" when none failed, else the lowest failing rank's reason
   /// (ProcessFailure).

@@ -602,6 +602,7 @@ void SendFailure(PartExchange& exchange, std::exception_ptr error)
   PartMessage failure;
   failure.Failed = true;
   failure.Reason = Reason(error);
+  exchange.Notify(failure.Reason);
   exchange.Send(PackPartMessage(failure));
   exchange.Flush();
 }
@@ -726,7 +727,33 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   BorderPassRule borderPasses(streaming);
   std::vector<std::uint8_t> settled(near.size(), 0);
   std::size_t pending = 0; // the first part not yet taken
-  std::vector<std::uint8_t> failed(static_cast<std::size_t>(ranks), 0);
+  std::vector<std::uint8_t> failed(static_cast<std::size_t>(ranks), 0), noticed(failed);
+  // Whenever rank 0 reports progress (between the stages of its own blocks and
+  // passes) it looks for another process's failure notice, and stops at once
+  // rather than when it reaches that process's part.
+  int noticedFirst = -1;
+  std::string noticedReason;
+  const ProgressObserver watched{ [&](const std::string& stage, double fraction) {
+    if (ranks > 1 && noticedFirst < 0)
+    {
+      const int rank = exchange->PollNotice(noticedReason);
+      if (rank > 0 && rank < ranks)
+      {
+        noticed[static_cast<std::size_t>(rank)] = 1;
+        noticedFirst = rank;
+        return false;
+      }
+    }
+    return observer.Report(stage, fraction);
+  } };
+  // A process whose failure came in place of a part also sent a notice: taken, so that it can end.
+  auto takeNotice = [&](int rank) {
+    if (!noticed[static_cast<std::size_t>(rank)])
+    {
+      noticed[static_cast<std::size_t>(rank)] = 1;
+      exchange->TakeNotice(rank);
+    }
+  };
   try
   {
     for (std::size_t first = 0; first < leaves.size(); ++pending)
@@ -735,7 +762,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
       const int owner = ranks > 1 ? OwnerOf(pending, starts.size() - 1, ranks) : 0;
       if (owner == 0)
       {
-        const PartRun run = StreamPart(pieces, leaves, first, decimation, streaming, observer, part, out);
+        const PartRun run = StreamPart(pieces, leaves, first, decimation, streaming, watched, part, out);
         if (run.Whole)
         {
           result.Streaming.Parts = 1;
@@ -759,6 +786,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         if (message.Failed)
         {
           failed[static_cast<std::size_t>(owner)] = 1;
+          takeNotice(owner);
           throw std::runtime_error(ProcessFailure(owner, ranks, message.Reason));
         }
         part = std::move(message.Part);
@@ -775,7 +803,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
           std::max(result.Streaming.LargestAssembledCells, assembly.Mesh.NumberOfCells());
         const std::size_t passFrom = timings.size();
         DecimateAssembled(pieces, LeafRunKeys(leaves, 0, first, dimension, depth), decimation, settled,
-          assembly, observer, 0.15 + 0.7 * double(first) / double(leaves.size()), out.Counts, clock);
+          assembly, watched, 0.15 + 0.7 * double(first) / double(leaves.size()), out.Counts, clock);
         PrefixStages(timings, passFrom, "joining parts: ");
         ++result.Streaming.BorderPasses;
         borderPasses.Passed(assembly.Mesh.NumberOfCells());
@@ -793,13 +821,19 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
         continue;
       try
       {
-        failed[static_cast<std::size_t>(owner)] = UnpackPartMessage(exchange->Receive(owner)).Failed;
+        if (UnpackPartMessage(exchange->Receive(owner)).Failed)
+        {
+          failed[static_cast<std::size_t>(owner)] = 1;
+          takeNotice(owner);
+        }
       }
       catch (const std::exception&)
       {
         failed[static_cast<std::size_t>(owner)] = 1;
       }
     }
+    if (noticedFirst > 0) // rank 0 stopped for it
+      throw std::runtime_error(ProcessFailure(noticedFirst, ranks, noticedReason));
     throw;
   }
 

@@ -131,7 +131,9 @@ struct StreamedResult
 /// parts to a process), rank 0 receives the others' and returns the mesh, the
 /// others return none (HoldsMesh false). A process that fails tells rank 0,
 /// which throws std::runtime_error naming it ("process R of N: reason")
-/// after taking every part still on its way.
+/// after taking every part still on its way; rank 0 looks for such a notice
+/// whenever it reports progress, so it stops then, not when it reaches the
+/// failed process's part.
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming = {},
   const ProgressObserver& observer = {}, PartExchange* exchange = nullptr);

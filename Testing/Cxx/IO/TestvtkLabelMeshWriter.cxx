@@ -323,12 +323,33 @@ TEST_F(WriterTest, ARewriteOnFewerProcessesLeavesNoStalePiece)
   vtkUnstructuredGrid* mesh = Mesher->GetOutput();
   std::vector<std::string> errors;
   ASSERT_EQ(WriteGrid(WithProcesses(mesh, 4), this->Path("m.pvtu"), errors), 1);
-  // A file the earlier summary did not name, and one named like a piece but not a piece's number.
-  std::ofstream(this->Path("m_2.vtu.bak")) << "kept";
-  std::ofstream(this->Path("m_x.vtu")) << "kept";
+  // The earlier summary also names files that are not pieces VTK would name: they stay.
+  std::string summary;
+  {
+    std::ifstream in(this->Path("m.pvtu"));
+    summary.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string extra =
+    "<Piece Source=\"m_x.vtu\"/><Piece Source=\"m_02.vtu\"/><Piece Source=\"other_5.vtu\"/>"
+    "<Piece Source=\"m_2.vtu.bak\"/><Piece Source=\"sub/m_5.vtu\"/>";
+  const std::size_t at = summary.rfind("</PUnstructuredGrid>");
+  ASSERT_NE(at, std::string::npos);
+  summary.insert(at, extra);
+  std::ofstream(this->Path("m.pvtu")) << summary;
+  fs::create_directories(this->Folder / "sub");
+  for (const char* kept : { "m_x.vtu", "m_02.vtu", "other_5.vtu", "m_2.vtu.bak", "sub/m_5.vtu" })
+    std::ofstream(this->Folder / kept) << "kept";
   ASSERT_EQ(WriteGrid(WithProcesses(mesh, 2), this->Path("m.pvtu"), errors), 1) << (errors.empty() ? "" : errors[0]);
-  EXPECT_EQ(Listing(this->Folder),
-    (std::set<std::string>{ "m.pvtu", "m_0.vtu", "m_1.vtu", "m_2.vtu.bak", "m_x.vtu" }));
+  EXPECT_EQ(Listing(this->Folder), (std::set<std::string>{ "m.pvtu", "m_0.vtu", "m_1.vtu", "m_x.vtu", "m_02.vtu",
+                                     "other_5.vtu", "m_2.vtu.bak", "sub" }));
+  EXPECT_TRUE(fs::exists(this->Folder / "sub/m_5.vtu"));
+  // A summary reached through a link is not tidied: its pieces lie beside its target.
+  fs::create_directories(this->Folder / "target");
+  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 3), (this->Folder / "target/l.pvtu").string(), errors), 1);
+  fs::create_symlink(this->Folder / "target/l.pvtu", this->Folder / "l.pvtu");
+  std::ofstream(this->Path("l_2.vtu")) << "not the target's piece";
+  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 2), this->Path("l.pvtu"), errors), 1) << (errors.empty() ? "" : errors[0]);
+  EXPECT_TRUE(fs::exists(this->Path("l_2.vtu")));
   vtkNew<vtkXMLPUnstructuredGridReader> whole;
   whole->SetFileName(this->Path("m.pvtu").c_str());
   whole->Update();

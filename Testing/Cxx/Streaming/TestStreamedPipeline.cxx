@@ -189,7 +189,7 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
 /// its progress observer at its first report of stage `stopAt`.
 StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1,
-  const std::string& stopAt = "")
+  const std::string& stopAt = "", const ProgressObserver& rootObserver = {})
 {
   testing::QueuedRun run;
   const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
@@ -213,14 +213,16 @@ StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesh
   testing::QueuedPartExchange root(0, ranks, run);
   struct TakesEverything
   {
-    std::map<int, std::deque<std::vector<char>>>& Queues;
+    testing::QueuedRun& Run;
     ~TakesEverything()
     {
-      for (const auto& [rank, queue] : Queues)
+      for (const auto& [rank, queue] : Run.Queues)
         EXPECT_TRUE(queue.empty()) << "rank 0 left a message of rank " << rank;
+      for (const auto& [rank, notices] : Run.Notices)
+        EXPECT_TRUE(notices.empty()) << "rank 0 left a failure notice of rank " << rank;
     }
-  } check{ run.Queues };
-  return MeshAndDecimate(image, mesher, decimation, streaming, {}, &root);
+  } check{ run };
+  return MeshAndDecimate(image, mesher, decimation, streaming, rootObserver, &root);
 }
 
 TEST(StreamedPipeline, SameMeshOnAnyNumberOfProcesses)
@@ -289,15 +291,24 @@ TEST(StreamedPipeline, AProcessThatFailsIsNamedByRankZero)
     {
       if (stage == "octree" && failing != 2)
         continue;
+      // Rank 0 runs last here, so the failure's notice is there before it
+      // fills its first block: it must stop at once, not after meshing its part.
+      std::vector<std::string> rootStages;
+      const ProgressObserver record{ [&](const std::string& s, double) {
+        rootStages.push_back(s);
+        return true;
+      } };
       try
       {
-        MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing, stage);
+        MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing, stage, record);
         ADD_FAILURE() << "rank 0 did not fail with process " << failing << " stopped at " << stage;
       }
       catch (const std::runtime_error& e)
       {
         EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped") << stage;
       }
+      EXPECT_EQ(std::count(rootStages.begin(), rootStages.end(), "fill"), 0)
+        << "rank 0 filled a block after process " << failing << " had failed";
     }
 }
 

@@ -31,6 +31,7 @@ struct QueuedRun
   std::map<int, std::deque<std::vector<char>>> Queues;
   std::map<int, std::string> Failures;
   std::map<int, std::size_t> BytesSent;
+  std::map<int, std::deque<std::string>> Notices;
 };
 
 class QueuedPartExchange final : public PartExchange
@@ -57,6 +58,25 @@ public:
     std::vector<char> message = std::move(queue.front());
     queue.pop_front();
     return message;
+  }
+  void Notify(const std::string& reason) override { Run.Notices[RankOfThis].push_back(reason); }
+  int PollNotice(std::string& reason) override
+  {
+    for (auto& [rank, notices] : Run.Notices)
+      if (!notices.empty())
+      {
+        reason = notices.front();
+        notices.pop_front();
+        return rank;
+      }
+    return -1;
+  }
+  void TakeNotice(int rank) override
+  {
+    auto& notices = Run.Notices[rank];
+    if (notices.empty())
+      throw std::logic_error("rank 0 waits for a notice rank " + std::to_string(rank) + " never sent");
+    notices.pop_front();
   }
   std::string Agree(const std::string& failure) override
   {

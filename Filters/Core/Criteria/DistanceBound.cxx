@@ -152,7 +152,7 @@ Polygon2 Project(const ConvexPiece& piece, int axis)
 
 /// The element lies in an axis-aligned plane (3D) and coplanar pieces, which
 /// do not overlap, cover it: its distance to them is 0.
-bool CoveredExactly(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces)
+bool CoveredExactly(const ConvexPiece& element, const std::vector<Target>& targets)
 {
   const int axis = element.Count >= 3 ? FlatAxis(element, 3) : -1;
   if (axis < 0)
@@ -160,8 +160,9 @@ bool CoveredExactly(const ConvexPiece& element, const std::vector<ConvexPiece>& 
   const Polygon2 subject = Project(element, axis);
   const double target = Area(subject);
   double covered = 0.0;
-  for (const ConvexPiece& piece : pieces)
+  for (const Target& t : targets)
   {
+    const ConvexPiece& piece = t.Piece;
     if (piece.Count < 3 || FlatAxis(piece, 3) != axis ||
       std::abs(piece.Points[0][axis] - element.Points[0][axis]) > kRoundOff)
       continue;
@@ -173,7 +174,7 @@ bool CoveredExactly(const ConvexPiece& element, const std::vector<ConvexPiece>& 
 }
 
 /// 2D analogue: a segment on a line that collinear segments cover.
-bool CoveredExactlyOnLine(const ConvexPiece& element, const std::vector<ConvexPiece>& pieces)
+bool CoveredExactlyOnLine(const ConvexPiece& element, const std::vector<Target>& targets)
 {
   if (element.Count != 2)
     return false;
@@ -185,8 +186,9 @@ bool CoveredExactlyOnLine(const ConvexPiece& element, const std::vector<ConvexPi
     const double lo = std::min(element.Points[0][along], element.Points[1][along]);
     const double hi = std::max(element.Points[0][along], element.Points[1][along]);
     double covered = 0.0;
-    for (const ConvexPiece& piece : pieces)
+    for (const Target& t : targets)
     {
+      const ConvexPiece& piece = t.Piece;
       if (piece.Count != 2 || std::abs(piece.Points[0][across] - element.Points[0][across]) > kRoundOff ||
         std::abs(piece.Points[1][across] - element.Points[0][across]) > kRoundOff)
         continue;
@@ -301,15 +303,8 @@ bool Within(const ConvexPiece& element, const std::vector<Target>& allTargets, d
   }
   if (worstVertex > h + kRoundOff)
     return false;
-  if (worstVertex < kRoundOff)
-  {
-    std::vector<ConvexPiece> pieces;
-    pieces.reserve(targets.size());
-    for (const Target& target : targets)
-      pieces.push_back(target.Piece);
-    if (CoveredExactly(element, pieces) || CoveredExactlyOnLine(element, pieces))
-      return true;
-  }
+  if (worstVertex < kRoundOff && (CoveredExactly(element, targets) || CoveredExactlyOnLine(element, targets)))
+    return true;
   if (depth == 0)
     return false;
   for (const ConvexPiece& child : Subdivide(element))

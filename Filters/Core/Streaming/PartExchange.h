@@ -8,8 +8,9 @@
  * process that joins them: each process meshes the parts it owns and every
  * process other than rank 0 hands its parts, as bytes (MeshPart.h), to rank 0,
  * in order; one that fails also sends a notice rank 0 looks for between its
- * own blocks, so that a failure ends the run early. The core knows processes only through this: the MPI one is the
- * application's (Filters/MPIPartExchange.h); tests run the ranks in one process.
+ * own blocks, so that a failure ends the run early. The core knows processes
+ * only through this: the MPI one is the application's
+ * (Filters/MPIPartExchange.h); tests run the ranks in one process.
  */
 
 #include <string>

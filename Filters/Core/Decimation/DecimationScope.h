@@ -42,6 +42,12 @@ struct DecimationScope
   std::function<void(const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
     std::vector<std::uint8_t>& frozen)>
     FreezeNear;
+  /// The mesh is what earlier passes of this run left, each of which kept
+  /// every bound: the setup skips re-checking its angles and h(M,I). Only
+  /// for a pass that a later pass over the same faces follows, whose setup
+  /// re-checks them (the streamed pipeline's border passes and joins, before
+  /// its last pass).
+  bool InputKept = false;
   /// Per mesh vertex: offered in the first pass (relocation then tries every
   /// vertex, and re-offers what it moves); empty: every vertex.
   std::vector<std::uint8_t> Offered;
@@ -49,7 +55,7 @@ struct DecimationScope
 
 /// Decimates `mesh` (of `image`, whose boundary is `boundary`) in place within
 /// `scope`: checks that it covers the image with no angle below the bound,
-/// that its interface faces hold h(M,I) and certifies h(I,M) (throwing std::invalid_argument when the
+/// that its interface faces hold h(M,I) (unless scope.InputKept) and certifies h(I,M) (throwing std::invalid_argument when the
 /// input breaks a bound), merges in RegionScheduler's runs, then the rounds of
 /// relocation. Counts are added to `counts`, stage times to `clock`, progress
 /// spans [start, start + share]; throws AbortRequested when `observer` says stop.

@@ -35,14 +35,28 @@ bool CornersWithin(const ConvexPiece& image, const ConvexPiece& face, double h)
 }
 
 /// Mesh interface faces by the grid bins (of 8 doubled-lattice units, 4
-/// voxels) their bounding boxes meet.
+/// voxels) their bounding boxes meet. Each entry carries its face's box, so
+/// that a query tests it without reaching for the face's vertices: a bin of
+/// the voxel-exact mesh of a many-label image holds hundreds of faces, few of
+/// them near a given image face (digimouse: ~400 to a query, ~120 near).
 class FaceGrid
 {
 public:
   FaceGrid(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces)
-    : Mesh(mesh)
-    , Faces(faces)
   {
+    std::vector<Entry> boxes(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+      Entry& e = boxes[f];
+      e.Face = static_cast<std::uint32_t>(f);
+      e.Low = e.High = mesh.Position[faces[f].Vertices[0]];
+      for (int i = 1; i < mesh.Dimension; ++i)
+        for (int a = 0; a < 3; ++a)
+        {
+          e.Low[a] = std::min(e.Low[a], mesh.Position[faces[f].Vertices[i]][a]);
+          e.High[a] = std::max(e.High[a], mesh.Position[faces[f].Vertices[i]][a]);
+        }
+    }
     // Bins aligned on the box, over the faces' bounding box only: a block of
     // the streamed pipeline is small in the whole mesh's box.
     int low[3], high[3];
@@ -51,13 +65,12 @@ public:
       low[a] = faces.empty() ? mesh.BoxLow[a] : INT32_MAX;
       high[a] = faces.empty() ? mesh.BoxLow[a] : INT32_MIN;
     }
-    for (const InterfaceFace& f : faces)
-      for (int i = 0; i < mesh.Dimension; ++i)
-        for (int a = 0; a < 3; ++a)
-        {
-          low[a] = std::min(low[a], mesh.Position[f.Vertices[i]][a]);
-          high[a] = std::max(high[a], mesh.Position[f.Vertices[i]][a]);
-        }
+    for (const Entry& e : boxes)
+      for (int a = 0; a < 3; ++a)
+      {
+        low[a] = std::min(low[a], e.Low[a]);
+        high[a] = std::max(high[a], e.High[a]);
+      }
     for (int a = 0; a < 3; ++a)
     {
       Low[a] = mesh.BoxLow[a] + kBin * ((low[a] - mesh.BoxLow[a]) / kBin);
@@ -74,10 +87,14 @@ public:
         Items.resize(Start.back());
         next.assign(Start.begin(), Start.end() - 1);
       }
-      for (std::size_t f = 0; f < faces.size(); ++f)
+      for (const Entry& e : boxes)
       {
         int lo[3], hi[3];
-        Bounds(faces[f], lo, hi);
+        for (int a = 0; a < 3; ++a)
+        {
+          lo[a] = BinOf(e.Low[a], a);
+          hi[a] = BinOf(e.High[a], a);
+        }
         for (int z = lo[2]; z <= hi[2]; ++z)
           for (int y = lo[1]; y <= hi[1]; ++y)
             for (int x = lo[0]; x <= hi[0]; ++x)
@@ -86,14 +103,16 @@ public:
               if (pass == 0)
                 ++Start[bin + 1];
               else
-                Items[next[bin]++] = static_cast<std::uint32_t>(f);
+                Items[next[bin]++] = e;
             }
       }
     }
   }
 
-  /// Faces whose bins meet the index-space box [lo, hi], each once.
-  void Query(const Point3& lo, const Point3& hi, std::vector<std::uint32_t>& out) const
+  /// Faces whose bounding boxes meet the index-space box [lo, hi], each
+  /// once, in increasing order; with `wholeBins`, every face of the bins
+  /// that meet it.
+  void Query(const Point3& lo, const Point3& hi, std::vector<std::uint32_t>& out, bool wholeBins = false) const
   {
     out.clear();
     // Bins beyond the grid hold no face: clipped, not clamped.
@@ -105,18 +124,34 @@ public:
       if (from[a] > to[a])
         return;
     }
+    const Point3 doubledLow{ 2.0 * lo[0], 2.0 * lo[1], 2.0 * lo[2] };
+    const Point3 doubledHigh{ 2.0 * hi[0], 2.0 * hi[1], 2.0 * hi[2] };
     for (int z = from[2]; z <= to[2]; ++z)
       for (int y = from[1]; y <= to[1]; ++y)
         for (int x = from[0]; x <= to[0]; ++x)
         {
           const std::size_t bin = Index(x, y, z);
-          out.insert(out.end(), Items.begin() + Start[bin], Items.begin() + Start[bin + 1]);
+          for (std::uint32_t i = Start[bin]; i < Start[bin + 1]; ++i)
+            if (wholeBins || Items[i].Meets(doubledLow, doubledHigh))
+              out.push_back(Items[i].Face);
         }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 
 private:
+  struct Entry
+  {
+    std::uint32_t Face;
+    Lattice Low, High; ///< the face's bounding box, doubled lattice
+    bool Meets(const Point3& lo, const Point3& hi) const
+    {
+      for (int a = 0; a < 3; ++a)
+        if (High[a] < lo[a] || Low[a] > hi[a])
+          return false;
+      return true;
+    }
+  };
   static constexpr int kBin = 8;
   int Unclamped(double doubled, int axis) const
   {
@@ -124,25 +159,22 @@ private:
   }
   int BinOf(double doubled, int axis) const { return std::clamp(Unclamped(doubled, axis), 0, Bins[axis] - 1); }
   std::size_t Index(int x, int y, int z) const { return (static_cast<std::size_t>(z) * Bins[1] + y) * Bins[0] + x; }
-  void Bounds(const InterfaceFace& f, int lo[3], int hi[3]) const
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      int mn = Mesh.Position[f.Vertices[0]][a], mx = mn;
-      for (int i = 1; i < Mesh.Dimension; ++i)
-      {
-        mn = std::min(mn, Mesh.Position[f.Vertices[i]][a]);
-        mx = std::max(mx, Mesh.Position[f.Vertices[i]][a]);
-      }
-      lo[a] = BinOf(mn, a);
-      hi[a] = BinOf(mx, a);
-    }
-  }
-  const EditableMesh& Mesh;
-  const std::vector<InterfaceFace>& Faces;
   int Low[3], Bins[3];
-  std::vector<std::uint32_t> Start, Items;
+  std::vector<std::uint32_t> Start;
+  std::vector<Entry> Items;
 };
+
+/// The vertices of the faces `list` of `faces` that separate `side`, sorted, each once.
+void SideVertices(const std::vector<InterfaceFace>& faces, const std::vector<std::uint32_t>& list, std::int32_t side,
+  int dimension, std::vector<VertexId>& out)
+{
+  out.clear();
+  for (std::uint32_t f : list)
+    if (faces[f].Separates(side))
+      out.insert(out.end(), faces[f].Vertices.begin(), faces[f].Vertices.begin() + dimension);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
 
 } // namespace
 
@@ -201,8 +233,8 @@ void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vecto
   std::vector<std::vector<std::int32_t>> missed(MaxThreads()); // with `uncertified`
   ParallelChunks(items, 1024, [&](unsigned thread, std::size_t begin, std::size_t end) {
     std::vector<std::uint32_t> near;
-    std::vector<InterfaceFace> candidates, star;
-    std::vector<ConvexPiece> pieces;
+    std::vector<InterfaceFace> candidates;
+    std::vector<ConvexPiece> pieces, star;
     std::vector<VertexId> vertices;
     for (std::size_t item = begin; item < end; ++item)
     {
@@ -216,31 +248,40 @@ void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vecto
       for (std::uint32_t f : near)
         if (faces[f].Separates(ItemSide[item]))
           candidates.push_back(faces[f]);
-      auto anchor = Certify(mesh, static_cast<std::int32_t>(item), candidates, -1, pieces);
-      if (anchor[0] < 0)
+      // Certify's order, each piece made once: a face near every corner,
+      // else the star of the first vertex whose faces are within h, else all
+      // the faces together (pinned). Faces whose boxes miss the image face's
+      // box grown by h are left out (the grid's query): none of them is
+      // within h of any point of it, so no verdict changes.
+      std::array<VertexId, 3> anchor{ -1, -1, -1 };
+      pieces.clear();
+      for (const InterfaceFace& f : candidates)
       {
-        // A star that certifies it: the faces around one vertex of the candidates.
-        vertices.clear();
-        for (const InterfaceFace& f : candidates)
-          vertices.insert(vertices.end(), f.Vertices.begin(), f.Vertices.begin() + Dimension);
-        std::sort(vertices.begin(), vertices.end());
-        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-        for (VertexId v : vertices)
+        pieces.push_back(MeshFacePiece(mesh, f.Vertices));
+        if (CornersWithin(image, pieces.back(), H))
         {
-          star.clear();
-          for (const InterfaceFace& f : candidates)
-            if (f.Contains(v))
-              star.push_back(f);
-          anchor = Certify(mesh, static_cast<std::int32_t>(item), star, v, pieces);
-          if (anchor[0] >= 0)
-            break;
+          anchor = f.Vertices;
+          break;
         }
       }
       if (anchor[0] < 0)
       {
-        pieces.clear();
-        for (const InterfaceFace& f : candidates)
-          pieces.push_back(MeshFacePiece(mesh, f.Vertices));
+        SideVertices(faces, near, ItemSide[item], Dimension, vertices);
+        for (VertexId v : vertices)
+        {
+          star.clear();
+          for (std::size_t c = 0; c < candidates.size(); ++c)
+            if (candidates[c].Contains(v))
+              star.push_back(pieces[c]);
+          if (WithinDistance(image, star, H))
+          {
+            anchor = { v, kStar, kStar };
+            break;
+          }
+        }
+      }
+      if (anchor[0] < 0)
+      {
         if (!WithinDistance(image, pieces, H))
         {
           if (uncertified)
@@ -250,7 +291,11 @@ void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vecto
           continue;
         }
         anchor = { kPinned, kPinned, kPinned };
-        pinnedVertices[item] = vertices;
+        // Frozen: the vertices of every face of its side in the grid bins
+        // around it, not only of those it rests on (freezing only those left
+        // 17 % more cells on Cassini 400).
+        grid.Query(lo, hi, near, true);
+        SideVertices(faces, near, ItemSide[item], Dimension, pinnedVertices[item]);
       }
       Anchor[item] = anchor;
     }

@@ -64,6 +64,25 @@ void ValidateAgainstImage(const EditableMesh& mesh, const LabelImage& image, dou
       " degrees, below the minimum angle " + std::to_string(minimumAngle) + " asked for");
 }
 
+/// The input must hold h(M, I) already: merges only check the faces they move.
+void CheckMeshToImage(const EditableMesh& mesh, const std::vector<InterfaceFace>& faces,
+  const ImageBoundary& boundary, const ImageBoundaryAnchors& anchors, double bound)
+{
+  std::vector<std::int64_t> far(MaxThreads(), -1);
+  ParallelChunks(faces.size(), 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
+    FidelityCheck check(boundary, anchors, bound);
+    for (std::size_t f = begin; f < end && far[thread] < 0; ++f)
+      if (!check.FaceWithinBound(mesh, faces[f]))
+        far[thread] = static_cast<std::int64_t>(f);
+  });
+  for (std::int64_t f : far)
+    if (f >= 0)
+      throw std::invalid_argument("the input mesh does not hold h(M,I) <= " +
+        std::to_string(bound) + " (a face between materials " +
+        std::to_string(std::max(faces[f].Low, 0)) + " and " + std::to_string(faces[f].High) +
+        " is farther from their image interface): mesh it with this bound or a smaller one first");
+}
+
 struct Shared
 {
   const DecimationParameters& Parameters;
@@ -389,7 +408,8 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
       throw AbortRequested{};
   };
   report("decimation setup", 0.0);
-  ValidateAgainstImage(mesh, image, parameters.MinimumAngle);
+  if (!scope.InputKept)
+    ValidateAgainstImage(mesh, image, parameters.MinimumAngle);
   ImageBoundaryAnchors anchors(boundary, parameters.ImageToMeshDistance);
   std::vector<std::uint8_t> frozen = scope.Frozen;
   frozen.resize(mesh.Position.size(), 0);
@@ -397,20 +417,8 @@ void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, Edi
     frozen[v] |= mesh.Border[v];
   {
     const std::vector<InterfaceFace> faces = mesh.InterfaceFaces();
-    // The input must hold h(M, I) already: merges only check what they move.
-    std::vector<std::int64_t> far(MaxThreads(), -1);
-    ParallelChunks(faces.size(), 4096, [&](unsigned thread, std::size_t begin, std::size_t end) {
-      FidelityCheck check(boundary, anchors, parameters.MeshToImageDistance);
-      for (std::size_t f = begin; f < end && far[thread] < 0; ++f)
-        if (!check.FaceWithinBound(mesh, faces[f]))
-          far[thread] = static_cast<std::int64_t>(f);
-    });
-    for (std::int64_t f : far)
-      if (f >= 0)
-        throw std::invalid_argument("the input mesh does not hold h(M,I) <= " +
-          std::to_string(parameters.MeshToImageDistance) + " (a face between materials " +
-          std::to_string(std::max(faces[f].Low, 0)) + " and " + std::to_string(faces[f].High) +
-          " is farther from their image interface): mesh it with this bound or a smaller one first");
+    if (!scope.InputKept)
+      CheckMeshToImage(mesh, faces, boundary, anchors, parameters.MeshToImageDistance);
     report("decimation setup", 0.05);
     if (scope.FreezeNear)
     {

@@ -327,6 +327,7 @@ void DecimateAssembled(const PieceContext& context, const KeyRange& keys, const 
     selected[f] = keys.MayMeet(near[f]);
   DecimationScope scope;
   scope.ImageFaces = &selected;
+  scope.InputKept = true; // the blocks' or parts' output: the last pass re-checks it
   scope.Offered = std::move(assembly.Offered);
   scope.FreezeNear = [&](const EditableMesh& mesh, const std::vector<std::uint8_t>& uncertified,
                        std::vector<std::uint8_t>& frozen) {

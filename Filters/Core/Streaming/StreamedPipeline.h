@@ -29,8 +29,10 @@
  *    the mesh faces within h(I,M) of it stay the initial mesh's until the
  *    last pass (a merge only rebuilds its vertex's star, inside the star);
  *  - a border pass is a block whose keys are those of all blocks so far: it
- *    re-checks the assembled mesh (angles, h(M,I) of every face) and
  *    certifies every image face near it, settled or not, before merging;
+ *    its input is the output of passes that kept every bound, so it does
+ *    not re-check angles and h(M,I) (DecimationScope::InputKept): the last
+ *    pass does, on every face;
  *  - the last pass re-checks the assembled mesh from scratch (angles, h(M,I)
  *    of every face, a certificate for every image face) before merging.
  * One block gives exactly DecimateMesh(MeshLabelImage(...)).

@@ -48,6 +48,28 @@ MPI_Comm Parts()
   return communicator;
 }
 
+/// `root`'s `value` on every rank (collective): its length, then its bytes.
+std::string BroadcastString(const std::string& value, int root, const char* what)
+{
+  std::uint64_t length = value.size();
+  Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, Parts()), what);
+  std::vector<char> bytes(value.begin(), value.end());
+  bytes.resize(static_cast<std::size_t>(length));
+  Check(MPI_Bcast(bytes.data(), static_cast<int>(length), MPI_CHAR, root, Parts()), what);
+  return std::string(bytes.begin(), bytes.end());
+}
+
+/// MPI started and not finalized: the only time it may be called.
+bool MPIUsable()
+{
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized)
+    return false;
+  MPI_Finalized(&finalized);
+  return !finalized;
+}
+
 /// The lowest failing rank's reason, the same on every rank (collective).
 std::string FirstFailureOf(const std::string& failure, int size)
 {
@@ -58,12 +80,7 @@ std::string FirstFailureOf(const std::string& failure, int size)
   if (first == all.end())
     return {};
   const int root = static_cast<int>(first - all.begin());
-  std::uint64_t length = failure.size();
-  Check(MPI_Bcast(&length, 1, MPI_UINT64_T, root, Parts()), "share a failure");
-  std::vector<char> reason(failure.begin(), failure.end());
-  reason.resize(static_cast<std::size_t>(length));
-  Check(MPI_Bcast(reason.data(), static_cast<int>(length), MPI_CHAR, root, Parts()), "share a failure");
-  return ProcessFailure(root, size, std::string(reason.begin(), reason.end()));
+  return ProcessFailure(root, size, BroadcastString(failure, root, "share a failure"));
 }
 
 class MPIPartExchange final : public PartExchange
@@ -184,9 +201,7 @@ int WorldRank()
 {
   int rank = 0;
 #ifdef SC_ENABLE_MPI
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (initialized)
+  if (MPIUsable())
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
 #endif
   return rank;
@@ -196,9 +211,7 @@ int WorldSize()
 {
   int size = 1;
 #ifdef SC_ENABLE_MPI
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (initialized)
+  if (MPIUsable())
     MPI_Comm_size(MPI_COMM_WORLD, &size);
 #endif
   return size;
@@ -247,13 +260,7 @@ std::string DifferenceFromRankZero(const std::string& fingerprint)
 #ifdef SC_ENABLE_MPI
   if (WorldSize() > 1)
   {
-    std::uint64_t length = fingerprint.size();
-    Check(MPI_Bcast(&length, 1, MPI_UINT64_T, 0, Parts()), "share the run's parameters");
-    std::vector<char> rankZero(fingerprint.begin(), fingerprint.end());
-    rankZero.resize(static_cast<std::size_t>(length));
-    Check(MPI_Bcast(rankZero.data(), static_cast<int>(length), MPI_CHAR, 0, Parts()),
-      "share the run's parameters");
-    if (std::string(rankZero.begin(), rankZero.end()) != fingerprint)
+    if (BroadcastString(fingerprint, 0, "share the run's parameters") != fingerprint)
       return "it was given another image or other meshing parameters than process 0 (every process must mesh the "
              "same)";
   }

@@ -18,7 +18,7 @@ namespace labelmesher
 class PartExchange;
 
 /// This process's rank in MPI_COMM_WORLD and the world's size (0 and 1 when
-/// MPI is not running or libsc has no MPI).
+/// MPI is not running, not yet or no longer (finalized), or libsc has no MPI).
 int WorldRank();
 int WorldSize();
 

@@ -43,12 +43,19 @@ inline double SquaredDistanceToSegment(const Point3& p, const Point3& a, const P
 }
 
 /// Squared distance from p to the closed triangle (a, b, c) (Ericson, Real-Time
-/// Collision Detection, 5.1.5).
+/// Collision Detection, 5.1.5). A degenerate triangle (two equal points, or
+/// three on a line) is the segment it spans, never NaN: Ericson's regions
+/// assume a proper triangle, and an edge region with a zero denominator is
+/// reached only by a degenerate one.
 inline double SquaredDistanceToTriangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c)
 {
+  auto sq = [](const Point3& v) { return Dot(v, v); };
+  auto degenerate = [&] {
+    return std::min({ SquaredDistanceToSegment(p, a, b), SquaredDistanceToSegment(p, b, c),
+      SquaredDistanceToSegment(p, a, c) });
+  };
   const Point3 ab = Sub(b, a), ac = Sub(c, a), ap = Sub(p, a);
   const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
-  auto sq = [](const Point3& v) { return Dot(v, v); };
   if (d1 <= 0 && d2 <= 0)
     return sq(ap);
   const Point3 bp = Sub(p, b);
@@ -57,17 +64,22 @@ inline double SquaredDistanceToTriangle(const Point3& p, const Point3& a, const 
     return sq(bp);
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0)
-    return sq(Sub(p, Add(a, Scale(ab, d1 / (d1 - d3)))));
+    return d1 - d3 > 0 ? sq(Sub(p, Add(a, Scale(ab, d1 / (d1 - d3))))) : degenerate(); // d1 - d3 = |ab|^2
   const Point3 cp = Sub(p, c);
   const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
   if (d6 >= 0 && d5 <= d6)
     return sq(cp);
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0)
-    return sq(Sub(p, Add(a, Scale(ac, d2 / (d2 - d6)))));
+    return d2 - d6 > 0 ? sq(Sub(p, Add(a, Scale(ac, d2 / (d2 - d6))))) : degenerate(); // |ac|^2
   const double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return sq(Sub(p, Add(b, Scale(Sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))))));
+  {
+    const double along = (d4 - d3) + (d5 - d6); // |bc|^2
+    return along > 0 ? sq(Sub(p, Add(b, Scale(Sub(c, b), (d4 - d3) / along)))) : degenerate();
+  }
+  if (!(va + vb + vc > 0)) // |ab x ac|^2: three points on a line
+    return degenerate();
   const double denom = 1.0 / (va + vb + vc);
   const double v = vb * denom, w = vc * denom;
   return sq(Sub(p, Add(a, Add(Scale(ab, v), Scale(ac, w)))));

@@ -37,9 +37,11 @@ void StartMPI()
 bool MPIRunning()
 {
 #ifdef SC_ENABLE_MPI
-  int initialized = 0;
+  int initialized = 0, finalized = 0;
   MPI_Initialized(&initialized);
-  return initialized != 0;
+  if (initialized)
+    MPI_Finalized(&finalized);
+  return initialized != 0 && finalized == 0;
 #else
   return true;
 #endif

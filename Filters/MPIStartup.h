@@ -23,7 +23,8 @@ namespace labelmesher
 /// without MPI (the 3D Slicer extension's).
 void StartMPI();
 
-/// True when MPI is running in this process (or libsc has no MPI: nothing will start).
+/// True when MPI is running in this process: started and not finalized (or libsc has no MPI:
+/// nothing will start).
 bool MPIRunning();
 
 /// Address space a singleton start of MPI still takes in this process: 0 once it runs. Open MPI

@@ -43,7 +43,8 @@ struct DecimationScope
     std::vector<std::uint8_t>& frozen)>
     FreezeNear;
   /// The mesh is what earlier passes of this run left, each of which kept
-  /// every bound: the setup skips re-checking its angles and h(M,I). Only
+  /// every bound: the setup skips re-checking that it covers the image, its
+  /// angles and h(M,I) (not the certificates of h(I,M), which it makes). Only
   /// for a pass that a later pass over the same faces follows, whose setup
   /// re-checks them (the streamed pipeline's border passes and joins, before
   /// its last pass).
@@ -54,9 +55,10 @@ struct DecimationScope
 };
 
 /// Decimates `mesh` (of `image`, whose boundary is `boundary`) in place within
-/// `scope`: checks that it covers the image with no angle below the bound,
-/// that its interface faces hold h(M,I) (unless scope.InputKept) and certifies h(I,M) (throwing std::invalid_argument when the
-/// input breaks a bound), merges in RegionScheduler's runs, then the rounds of
+/// `scope`: checks that it covers the image with no angle below the bound and
+/// that its interface faces hold h(M,I) (neither with scope.InputKept),
+/// certifies h(I,M) (throwing std::invalid_argument when the input breaks a
+/// bound), merges in RegionScheduler's runs, then the rounds of
 /// relocation. Counts are added to `counts`, stage times to `clock`, progress
 /// spans [start, start + share]; throws AbortRequested when `observer` says stop.
 void DecimateInScope(const LabelImage& image, const ImageBoundary& boundary, EditableMesh& mesh, const DecimationParameters& parameters,

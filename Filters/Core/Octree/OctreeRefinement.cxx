@@ -59,6 +59,15 @@ void InitializeP4est()
   // tried again (after the application registers a starter), and call_once's retry after an
   // exception is not reliable everywhere.
   std::lock_guard<std::mutex> lock(initializationMutex);
+#ifdef SC_ENABLE_MPI
+  // Every forest, not only the first: a forest is made on MPI_COMM_SELF, and any MPI call after
+  // the application finalized MPI makes Open MPI abort the process.
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (finalized)
+    throw std::logic_error("MPI was finalized already in this process: meshing needs it running "
+                           "(finalize it only after the last filter has run)");
+#endif
   if (initialized)
     return;
 #ifdef SC_ENABLE_MPI

@@ -44,9 +44,9 @@ inline double SquaredDistanceToSegment(const Point3& p, const Point3& a, const P
 
 /// Squared distance from p to the closed triangle (a, b, c) (Ericson, Real-Time
 /// Collision Detection, 5.1.5). A degenerate triangle (two equal points, or
-/// three on a line) is the segment it spans, never NaN: Ericson's regions
-/// assume a proper triangle, and an edge region with a zero denominator is
-/// reached only by a degenerate one.
+/// three on a line, to 1e-6 radians) is the segment it spans, never NaN:
+/// Ericson's regions assume a proper triangle, and an edge region with a zero
+/// denominator is reached only by a degenerate one.
 inline double SquaredDistanceToTriangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c)
 {
   auto sq = [](const Point3& v) { return Dot(v, v); };
@@ -78,7 +78,9 @@ inline double SquaredDistanceToTriangle(const Point3& p, const Point3& a, const 
     const double along = (d4 - d3) + (d5 - d6); // |bc|^2
     return along > 0 ? sq(Sub(p, Add(b, Scale(Sub(c, b), (d4 - d3) / along)))) : degenerate();
   }
-  if (!(va + vb + vc > 0)) // |ab x ac|^2: three points on a line
+  // va + vb + vc = |ab x ac|^2: on a line (up to the rounding of the products above, which can
+  // leave it a little positive and every edge region missed), the segments decide.
+  if (!(va + vb + vc > 1e-12 * Dot(ab, ab) * Dot(ac, ac)))
     return degenerate();
   const double denom = 1.0 / (va + vb + vc);
   const double v = vb * denom, w = vc * denom;

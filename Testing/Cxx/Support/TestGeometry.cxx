@@ -20,9 +20,14 @@ TEST(Geometry, ADegenerateTriangleIsTheSegmentItSpans)
 {
   std::mt19937 random(20261206);
   std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
-  auto point = [&] { return Point3{ coordinate(random), coordinate(random), coordinate(random) }; };
-  for (int trial = 0; trial < 2000; ++trial)
+  for (int trial = 0; trial < 4000; ++trial)
   {
+    // Half the trials far from the origin (a 16,000-voxel image's lattice), where the region
+    // tests' products round.
+    const double offset = trial % 2 == 0 ? 0.0 : 8191.5;
+    auto point = [&] {
+      return Point3{ offset + coordinate(random), offset + coordinate(random), offset + coordinate(random) };
+    };
     const Point3 p = point(), a = point(), c = point();
     const double segment = SquaredDistanceToSegment(p, a, c);
     // Two equal points, in every position; then a third point on the segment (a line through it).

@@ -233,8 +233,8 @@ void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vecto
   std::vector<std::vector<std::int32_t>> missed(MaxThreads()); // with `uncertified`
   ParallelChunks(items, 1024, [&](unsigned thread, std::size_t begin, std::size_t end) {
     std::vector<std::uint32_t> near;
-    std::vector<InterfaceFace> candidates;
-    std::vector<ConvexPiece> pieces, star;
+    std::vector<InterfaceFace> candidates, star;
+    std::vector<ConvexPiece> pieces;
     std::vector<VertexId> vertices;
     for (std::size_t item = begin; item < end; ++item)
     {
@@ -243,45 +243,34 @@ void ImageBoundaryAnchors::Initialize(const EditableMesh& mesh, const std::vecto
       const ConvexPiece image = Boundary.Piece(static_cast<std::size_t>(ItemFace[item]));
       Point3 lo, hi;
       BoxAround(image, H + 1e-6, lo, hi);
+      // Faces whose boxes miss this box are farther than h from every point
+      // of the image face: they certify nothing.
       grid.Query(lo, hi, near);
       candidates.clear();
       for (std::uint32_t f : near)
         if (faces[f].Separates(ItemSide[item]))
           candidates.push_back(faces[f]);
-      // Certify's order, each piece made once: a face near every corner,
-      // else the star of the first vertex whose faces are within h, else all
-      // the faces together (pinned). Faces whose boxes miss the image face's
-      // box grown by h are left out (the grid's query): none of them is
-      // within h of any point of it, so no verdict changes.
-      std::array<VertexId, 3> anchor{ -1, -1, -1 };
-      pieces.clear();
-      for (const InterfaceFace& f : candidates)
-      {
-        pieces.push_back(MeshFacePiece(mesh, f.Vertices));
-        if (CornersWithin(image, pieces.back(), H))
-        {
-          anchor = f.Vertices;
-          break;
-        }
-      }
+      auto anchor = Certify(mesh, static_cast<std::int32_t>(item), candidates, -1, pieces);
       if (anchor[0] < 0)
       {
+        // A star that certifies it: the faces around one vertex of the candidates.
         SideVertices(faces, near, ItemSide[item], Dimension, vertices);
         for (VertexId v : vertices)
         {
           star.clear();
-          for (std::size_t c = 0; c < candidates.size(); ++c)
-            if (candidates[c].Contains(v))
-              star.push_back(pieces[c]);
-          if (WithinDistance(image, star, H))
-          {
-            anchor = { v, kStar, kStar };
+          for (const InterfaceFace& f : candidates)
+            if (f.Contains(v))
+              star.push_back(f);
+          anchor = Certify(mesh, static_cast<std::int32_t>(item), star, v, pieces);
+          if (anchor[0] >= 0)
             break;
-          }
         }
       }
       if (anchor[0] < 0)
       {
+        pieces.clear();
+        for (const InterfaceFace& f : candidates)
+          pieces.push_back(MeshFacePiece(mesh, f.Vertices));
         if (!WithinDistance(image, pieces, H))
         {
           if (uncertified)

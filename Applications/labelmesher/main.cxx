@@ -82,7 +82,7 @@ void CheckOutputPaths(const Arguments& args)
 {
   for (const std::string& path : args.Outputs)
   {
-    labelmesher::io::CheckOutputPath(path);
+    labelmesher::io::CheckMeshOutputPath(path);
   }
   if (!args.Report.empty())
   {

@@ -100,6 +100,18 @@ std::string KnownExtensions()
   return list;
 }
 
+void CheckMeshOutputPath(const std::string& path)
+{
+  if (FormatOfPath(path) == MeshFormat::Pvtu)
+  {
+    CheckPvtuPath(path);
+  }
+  else
+  {
+    CheckOutputPath(path);
+  }
+}
+
 bool HoldsCurvedCells(MeshFormat format)
 {
   return format == MeshFormat::Vtu || format == MeshFormat::Pvtu || format == MeshFormat::LegacyVtk ||

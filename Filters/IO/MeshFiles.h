@@ -56,6 +56,10 @@ enum class MeshFormat
 std::optional<MeshFormat> FormatOfPath(const std::string& path);
 /// ".vtu, .pvtu, .vtk, .msh, .inp, .mesh, .vtp, .stl, .obj"
 std::string KnownExtensions();
+/// Throws WriteError unless a mesh can be written as `path` (SafeFile's
+/// CheckOutputPath, and for .pvtu PvtuWriter's CheckPvtuPath): call before
+/// long work, so that a bad path fails first.
+void CheckMeshOutputPath(const std::string& path);
 /// True for the formats that hold curved (cubic) cells: .vtu, .pvtu, .vtk (Bezier cells) and .msh
 /// (Gmsh's 10-node triangles, the same cells through their Lagrange nodes).
 bool HoldsCurvedCells(MeshFormat format);

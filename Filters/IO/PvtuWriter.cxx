@@ -185,8 +185,7 @@ std::vector<std::string> PieceSources(const std::string& summary)
 std::vector<std::string> EarlierPieces(const std::string& path)
 {
   std::error_code error;
-  // A summary reached through a link names pieces beside its target, not beside the link: left alone.
-  if (fs::is_symlink(path, error) || !fs::is_regular_file(path, error) ||
+  if (!fs::is_regular_file(path, error) ||
     fs::file_size(path, error) > (std::uintmax_t(1) << 24))
     return {};
   std::ifstream in(path, std::ios::binary);
@@ -232,6 +231,16 @@ std::unique_ptr<SafeFile> Written(const std::string& path, const std::string& by
 
 } // namespace
 
+void CheckPvtuPath(const std::string& path)
+{
+  CheckOutputPath(path);
+  std::error_code ignored;
+  const fs::file_status leadsTo = fs::status(path, ignored); // a device is written directly
+  if (WrittenPath(path) != path && !fs::is_character_file(leadsTo) && !fs::is_fifo(leadsTo))
+    throw WriteError("cannot write '" + path + "': it is a symbolic link, and a .pvtu's pieces are read "
+                     "beside the name it is opened by: write to '" + WrittenPath(path) + "' instead");
+}
+
 std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string& path)
 {
   if (mesh->GetNumberOfCells() == 0)
@@ -241,6 +250,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
   {
     const std::vector<int> pieceOfCell = PieceOfCells(mesh);
     const int pieces = 1 + *std::max_element(pieceOfCell.begin(), pieceOfCell.end());
+    CheckPvtuPath(path);
     const std::string summary = SummaryText(mesh, path, pieces);
     const std::vector<std::string> sources = PieceSources(summary);
     if (static_cast<int>(sources.size()) != pieces)

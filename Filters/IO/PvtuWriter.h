@@ -27,6 +27,12 @@ namespace labelmesher
 namespace io
 {
 
+/// Throws WriteError unless a summary can be written as `path`: SafeFile's
+/// checks, and `path` is not a symbolic link to a file (VTK reads a summary's
+/// pieces beside the name it is opened by: through a link they would be
+/// looked for beside the link or beside its target, never both).
+void CheckPvtuPath(const std::string& path);
+
 /// Writes `mesh` as `path` (.pvtu) and its pieces beside it; returns the files
 /// written, the summary first. Throws WriteError (one line).
 std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string& path);

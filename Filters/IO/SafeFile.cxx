@@ -117,23 +117,46 @@ private:
   std::vector<char> Data;
 };
 
-void CheckOutputPath(const std::string& target)
+std::string WrittenPath(const std::string& target)
 {
-  if (target.empty())
+  fs::path at(target);
+  for (int links = 0; links <= 40; ++links)
+  {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(at, ec)))
+    {
+      return at.string();
+    }
+    const fs::path next = fs::read_symlink(at, ec);
+    if (ec)
+    {
+      throw WriteError("cannot write " + Quoted(target) + ": " + ec.message());
+    }
+    at = next.is_absolute() ? next : at.parent_path() / next;
+  }
+  throw WriteError("cannot write " + Quoted(target) + ": too many levels of symbolic links");
+}
+
+void CheckOutputPath(const std::string& requested)
+{
+  if (requested.empty())
   {
     throw WriteError("empty output file name");
   }
+  // Through a link, the folder that must exist is its target's; messages name what was asked for.
+  const std::string target = WrittenPath(requested);
+  const std::string named = Quoted(requested);
   std::error_code ec;
   const fs::file_status status = fs::status(target, ec);
   if (fs::is_directory(status))
   {
-    throw WriteError("cannot write " + Quoted(target) + ": it is a folder");
+    throw WriteError("cannot write " + named + ": it is a folder");
   }
   if (fs::is_character_file(status) || fs::is_fifo(status))
   {
     if (::access(target.c_str(), W_OK) != 0)
     {
-      throw WriteError("cannot write " + Quoted(target) + ": " + std::strerror(errno));
+      throw WriteError("cannot write " + named + ": " + std::strerror(errno));
     }
     return;
   }
@@ -141,17 +164,17 @@ void CheckOutputPath(const std::string& target)
   const fs::file_status folderStatus = fs::status(folder, ec);
   if (!fs::exists(folderStatus))
   {
-    throw WriteError("cannot write " + Quoted(target) + ": folder " + Quoted(folder) + " does not exist");
+    throw WriteError("cannot write " + named + ": folder " + Quoted(folder) + " does not exist");
   }
   if (!fs::is_directory(folderStatus))
   {
-    throw WriteError("cannot write " + Quoted(target) + ": " + Quoted(folder) + " is not a folder");
+    throw WriteError("cannot write " + named + ": " + Quoted(folder) + " is not a folder");
   }
   std::string probe;
   const int fd = CreateTemporaryBeside(target, probe);
   if (fd < 0)
   {
-    throw WriteError("cannot write " + Quoted(target) + ": " + std::strerror(errno));
+    throw WriteError("cannot write " + named + ": " + std::strerror(errno));
   }
   ::close(fd);
   ::unlink(probe.c_str());
@@ -159,17 +182,18 @@ void CheckOutputPath(const std::string& target)
 
 SafeFile::SafeFile(const std::string& target)
   : TargetPath(target)
+  , Destination(WrittenPath(target))
 {
   CheckOutputPath(target);
   int fd = -1;
-  if (IsDevice(target))
+  if (IsDevice(this->Destination))
   {
     this->Device = true;
-    fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+    fd = ::open(this->Destination.c_str(), O_WRONLY | O_CLOEXEC);
   }
   else
   {
-    fd = CreateTemporaryBeside(target, this->Temporary);
+    fd = CreateTemporaryBeside(this->Destination, this->Temporary);
   }
   if (fd < 0)
   {
@@ -240,7 +264,7 @@ void SafeFile::Commit()
   }
   if (!this->Device)
   {
-    if (::rename(this->Temporary.c_str(), this->TargetPath.c_str()) != 0)
+    if (::rename(this->Temporary.c_str(), this->Destination.c_str()) != 0)
     {
       this->Fail(std::strerror(errno));
     }

@@ -13,6 +13,8 @@
  *
  * A target that is a character device or a pipe (/dev/stdout, /dev/null,
  * /dev/full) is written directly, checked the same way: it cannot be replaced.
+ * A target that is a symbolic link is written through: the file it leads to is
+ * replaced (its temporary beside that file), and the link stays a link.
  */
 
 #include <memory>
@@ -30,6 +32,11 @@ struct WriteError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+/// The file a write to `target` lands in: `target` itself, or the end of the
+/// chain of symbolic links it names (which need not exist yet). Throws
+/// WriteError for a chain of more than 40 links (a loop).
+std::string WrittenPath(const std::string& target);
 
 /// Throws WriteError unless `target` can be written: its folder exists and is
 /// a folder, it is not itself a folder, and a file can be created beside it
@@ -58,6 +65,7 @@ public:
 private:
   class Buffer;
   std::string TargetPath;
+  std::string Destination; ///< WrittenPath(TargetPath): renamed onto
   std::string Temporary; ///< empty when the target is a device written directly
   bool Device = false;
   bool Committed = false;

@@ -536,7 +536,12 @@ def case_bad_output_paths():
     image = cli.write_nrrd("ball.nrrd", cli.ball(12, 4.5).astype(np.uint8), "uchar")
     folder = cli.path("a_folder.vtu")
     os.makedirs(folder, exist_ok=True)
+    linked = cli.path("linked.pvtu")  # VTK would read its pieces beside the link, not beside its target
+    if os.path.lexists(linked):
+        os.remove(linked)
+    os.symlink("elsewhere.pvtu", linked)
     for output, fragment in [(folder, "is a folder"),
+                             (linked, "symbolic link"),
                              (cli.path("missing/mesh.vtu"), "does not exist"),
                              (os.path.join(image, "mesh.vtu"), "is not a folder"),
                              ("/proc/labelmesher-test.vtu", "cannot write")]:
@@ -552,7 +557,16 @@ def case_bad_output_paths():
     cli.expect_failure(cli.run("curve", image, "-o", cli.path("m.inp")), ".vtu, .pvtu, .vtk or .msh only", 2)
     cli.expect_failure(cli.run("mesh", image, "-o", cli.path("m.vtu"), "--report", cli.path("missing/r.json")),
                        "does not exist")
-    print("OK: bad output paths fail first")
+    # Other formats are written through a link: the link stays, its target gets the mesh.
+    target, link = cli.path("through_target.msh"), cli.path("through.msh")
+    for path in (target, link):
+        if os.path.lexists(path):
+            os.remove(path)
+    os.symlink(os.path.basename(target), link)
+    result = cli.run("mesh", image, "-o", link, "-q", "--no-measure")
+    assert result.returncode == 0, result.stderr
+    assert os.path.islink(link) and os.path.getsize(target) > 0
+    print("OK: bad output paths fail first; a link is written through")
 
 
 def assert_plain(result, fragment):

@@ -231,6 +231,31 @@ TEST_F(WriterTest, GmshVersionChoice)
   EXPECT_EQ(Slurp(this->Path("m.msh")).rfind("$MeshFormat\n4.1 0 8\n", 0), 0u);
 }
 
+TEST_F(WriterTest, AFileReachedThroughALinkIsWrittenThroughIt)
+{
+  // The link stays a link (relative, through a second link, or dangling) and its target gets
+  // the mesh, its temporary beside the target, none left anywhere.
+  fs::create_directories(this->Folder / "out");
+  std::ofstream(this->Folder / "out/old.msh") << "an earlier mesh";
+  fs::create_symlink("out/old.msh", this->Folder / "m.msh");
+  fs::create_symlink("m.msh", this->Folder / "twice.msh");
+  fs::create_symlink("out/new.msh", this->Folder / "dangling.msh");
+  fs::create_symlink("loop.msh", this->Folder / "loop.msh");
+  for (const char* name : { "m.msh", "twice.msh", "dangling.msh" })
+  {
+    std::vector<std::string> errors;
+    ASSERT_EQ(Write(this->Path(name), errors), 1) << name << ": " << (errors.empty() ? "" : errors[0]);
+    EXPECT_TRUE(fs::is_symlink(this->Path(name))) << name;
+  }
+  EXPECT_EQ(Slurp((this->Folder / "out/old.msh").string()).rfind("$MeshFormat", 0), 0u);
+  EXPECT_EQ(Slurp((this->Folder / "out/new.msh").string()).rfind("$MeshFormat", 0), 0u);
+  EXPECT_EQ(Listing(this->Folder / "out"), (std::set<std::string>{ "new.msh", "old.msh" }));
+  std::vector<std::string> errors;
+  EXPECT_EQ(Write(this->Path("loop.msh"), errors), 0);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("symbolic links"), std::string::npos) << errors[0];
+}
+
 TEST_F(WriterTest, FailedWritesReturnZeroSayOneLineAndLeaveNothing)
 {
   fs::create_directories(this->Folder / "taken.msh");
@@ -343,13 +368,22 @@ TEST_F(WriterTest, ARewriteOnFewerProcessesLeavesNoStalePiece)
   EXPECT_EQ(Listing(this->Folder), (std::set<std::string>{ "m.pvtu", "m_0.vtu", "m_1.vtu", "m_x.vtu", "m_02.vtu",
                                      "other_5.vtu", "m_2.vtu.bak", "sub" }));
   EXPECT_TRUE(fs::exists(this->Folder / "sub/m_5.vtu"));
-  // A summary reached through a link is not tidied: its pieces lie beside its target.
+  // A summary reached through a link is refused (VTK would look for its pieces beside the
+  // link, or beside its target, never both), one line naming where it leads; nothing changes.
   fs::create_directories(this->Folder / "target");
   ASSERT_EQ(WriteGrid(WithProcesses(mesh, 3), (this->Folder / "target/l.pvtu").string(), errors), 1);
-  fs::create_symlink(this->Folder / "target/l.pvtu", this->Folder / "l.pvtu");
-  std::ofstream(this->Path("l_2.vtu")) << "not the target's piece";
-  ASSERT_EQ(WriteGrid(WithProcesses(mesh, 2), this->Path("l.pvtu"), errors), 1) << (errors.empty() ? "" : errors[0]);
-  EXPECT_TRUE(fs::exists(this->Path("l_2.vtu")));
+  fs::create_symlink("target/l.pvtu", this->Folder / "l.pvtu");
+  const std::set<std::string> here = Listing(this->Folder), there = Listing(this->Folder / "target");
+  const std::string targetSummary = Slurp((this->Folder / "target/l.pvtu").string());
+  errors.clear();
+  EXPECT_EQ(WriteGrid(WithProcesses(mesh, 2), this->Path("l.pvtu"), errors), 0);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("symbolic link"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("target/l.pvtu"), std::string::npos) << errors[0];
+  EXPECT_TRUE(fs::is_symlink(this->Path("l.pvtu")));
+  EXPECT_EQ(Listing(this->Folder), here);
+  EXPECT_EQ(Listing(this->Folder / "target"), there);
+  EXPECT_EQ(Slurp((this->Folder / "target/l.pvtu").string()), targetSummary);
   vtkNew<vtkXMLPUnstructuredGridReader> whole;
   whole->SetFileName(this->Path("m.pvtu").c_str());
   whole->Update();

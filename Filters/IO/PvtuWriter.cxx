@@ -245,7 +245,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
 {
   if (mesh->GetNumberOfCells() == 0)
     throw WriteError("cannot write '" + path + "': the mesh has no cells");
-  std::vector<std::string> written;
+  std::vector<std::string> written, renamed;
   try
   {
     const std::vector<int> pieceOfCell = PieceOfCells(mesh);
@@ -272,6 +272,8 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
     {
       file->Commit();
       written.push_back(file->Target());
+      if (!file->WritesDevice())
+        renamed.push_back(file->DestinationPath()); // a piece's name may be a link: what it leads to
     }
     try
     {
@@ -286,7 +288,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
   {
     // Only a rename that failed after all were written gets here with files renamed: take
     // those back too, so that no summary of this run names a piece of another.
-    for (const std::string& file : written)
+    for (const std::string& file : renamed)
       std::remove(file.c_str());
     const std::string reason = e.what();
     // SafeFile's errors name the file (a piece or the summary); the others are the summary's.

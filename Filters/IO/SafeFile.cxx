@@ -56,7 +56,16 @@ int CreateTemporaryBeside(const std::string& target, std::string& name)
 bool IsDevice(const std::string& target)
 {
   struct stat st;
-  return ::stat(target.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
+  return ::stat(target.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode));
+}
+
+/// Written in place, not through a temporary: a device or a pipe, and any name
+/// under /dev or /proc (/dev/stdout redirected to a file leads, through
+/// /proc/self/fd/1, to that file, which the shell holds open: replacing it
+/// would lose what is written).
+bool WrittenDirectly(const std::string& target)
+{
+  return IsDevice(target) || target.rfind("/dev/", 0) == 0 || target.rfind("/proc/", 0) == 0;
 }
 
 } // namespace
@@ -119,6 +128,12 @@ private:
 
 std::string WrittenPath(const std::string& target)
 {
+  // /dev/stdout's link reads "pipe:[N]" or names the file the shell redirected to: written
+  // directly, not resolved.
+  if (WrittenDirectly(target))
+  {
+    return target;
+  }
   fs::path at(target);
   for (int links = 0; links <= 40; ++links)
   {
@@ -152,7 +167,7 @@ void CheckOutputPath(const std::string& requested)
   {
     throw WriteError("cannot write " + named + ": it is a folder");
   }
-  if (fs::is_character_file(status) || fs::is_fifo(status))
+  if (WrittenDirectly(target))
   {
     if (::access(target.c_str(), W_OK) != 0)
     {
@@ -186,10 +201,11 @@ SafeFile::SafeFile(const std::string& target)
 {
   CheckOutputPath(target);
   int fd = -1;
-  if (IsDevice(this->Destination))
+  if (WrittenDirectly(this->Destination))
   {
     this->Device = true;
-    fd = ::open(this->Destination.c_str(), O_WRONLY | O_CLOEXEC);
+    // Appended: /dev/stdout redirected with >> keeps what the file held.
+    fd = ::open(this->Destination.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   }
   else
   {

@@ -11,8 +11,10 @@
  * message, e.g. "No space left on device"), and the temporary is removed, so
  * a half-written mesh never appears under the target's name.
  *
- * A target that is a character device or a pipe (/dev/stdout, /dev/null,
- * /dev/full) is written directly, checked the same way: it cannot be replaced.
+ * A target that is a character device or a pipe (/dev/null, /dev/full), or any
+ * name under /dev or /proc (/dev/stdout, also when the shell redirected it to
+ * a file), is written directly (appended), checked the same way: it cannot be
+ * replaced.
  * A target that is a symbolic link is written through: the file it leads to is
  * replaced (its temporary beside that file), and the link stays a link.
  */
@@ -61,6 +63,10 @@ public:
   /// Completes the file under the target's name; throws WriteError.
   void Commit();
   const std::string& Target() const { return this->TargetPath; }
+  /// Where the bytes land: WrittenPath(Target()).
+  const std::string& DestinationPath() const { return this->Destination; }
+  /// The target is a device or a pipe, written directly (nothing to take back).
+  bool WritesDevice() const { return this->Device; }
 
 private:
   class Buffer;

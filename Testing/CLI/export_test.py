@@ -566,6 +566,21 @@ def case_bad_output_paths():
     result = cli.run("mesh", image, "-o", link, "-q", "--no-measure")
     assert result.returncode == 0, result.stderr
     assert os.path.islink(link) and os.path.getsize(target) > 0
+    # /dev/stdout is a link too, to a pipe here: written directly, not resolved.
+    result = cli.run("mesh", image, "-o", cli.path("piped.msh"), "-q", "--no-measure", "--report", "/dev/stdout")
+    assert result.returncode == 0, result.stderr
+    assert '"mesh"' in result.stdout, result.stdout[:300]
+    # ... and when the shell appends stdout to a file, the file keeps what it held.
+    log = cli.path("stdout.log")
+    with open(log, "w") as f:
+        f.write("earlier line\n")
+    with open(log, "a") as f:
+        done = subprocess.run([cli.EXE, "mesh", image, "-o", cli.path("piped.msh"), "-q", "--no-measure",
+                               "--report", "/dev/stdout"], stdout=f, stderr=subprocess.PIPE, text=True, timeout=540)
+    assert done.returncode == 0, done.stderr
+    with open(log) as f:
+        text = f.read()
+    assert text.startswith("earlier line\n") and '"mesh"' in text, text[:300]
     print("OK: bad output paths fail first; a link is written through")
 
 

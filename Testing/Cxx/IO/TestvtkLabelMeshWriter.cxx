@@ -241,11 +241,14 @@ TEST_F(WriterTest, AFileReachedThroughALinkIsWrittenThroughIt)
   fs::create_symlink("m.msh", this->Folder / "twice.msh");
   fs::create_symlink("out/new.msh", this->Folder / "dangling.msh");
   fs::create_symlink("loop.msh", this->Folder / "loop.msh");
-  for (const char* name : { "m.msh", "twice.msh", "dangling.msh" })
+  const std::set<std::string> links = Listing(this->Folder);
+  for (const char* name : { "twice.msh", "m.msh", "dangling.msh" }) // through two links first
   {
     std::vector<std::string> errors;
     ASSERT_EQ(Write(this->Path(name), errors), 1) << name << ": " << (errors.empty() ? "" : errors[0]);
-    EXPECT_TRUE(fs::is_symlink(this->Path(name))) << name;
+    for (const char* link : { "m.msh", "twice.msh", "dangling.msh", "loop.msh" })
+      EXPECT_TRUE(fs::is_symlink(this->Path(link))) << link << " after writing " << name;
+    EXPECT_EQ(Listing(this->Folder), links) << name;
   }
   EXPECT_EQ(Slurp((this->Folder / "out/old.msh").string()).rfind("$MeshFormat", 0), 0u);
   EXPECT_EQ(Slurp((this->Folder / "out/new.msh").string()).rfind("$MeshFormat", 0), 0u);

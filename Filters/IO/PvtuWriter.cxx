@@ -219,6 +219,16 @@ void RemoveStalePieces(const fs::path& folder, const std::vector<std::string>& e
   }
 }
 
+/// Throws WriteError when `path` is a link to a file (WrittenPath leaves a
+/// device or a pipe as named: those are written directly).
+void RefuseLinkedSummary(const std::string& path)
+{
+  const std::string leadsTo = WrittenPath(path);
+  if (leadsTo != path)
+    throw WriteError("cannot write '" + path + "': it is a symbolic link, and a .pvtu's pieces are read "
+                     "beside the name it is opened by: write to '" + leadsTo + "' instead");
+}
+
 /// `bytes` into a temporary beside `path`, not yet under its name (SafeFile).
 std::unique_ptr<SafeFile> Written(const std::string& path, const std::string& bytes)
 {
@@ -234,11 +244,7 @@ std::unique_ptr<SafeFile> Written(const std::string& path, const std::string& by
 void CheckPvtuPath(const std::string& path)
 {
   CheckOutputPath(path);
-  std::error_code ignored;
-  const fs::file_status leadsTo = fs::status(path, ignored); // a device is written directly
-  if (WrittenPath(path) != path && !fs::is_character_file(leadsTo) && !fs::is_fifo(leadsTo))
-    throw WriteError("cannot write '" + path + "': it is a symbolic link, and a .pvtu's pieces are read "
-                     "beside the name it is opened by: write to '" + WrittenPath(path) + "' instead");
+  RefuseLinkedSummary(path);
 }
 
 std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string& path)
@@ -250,7 +256,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
   {
     const std::vector<int> pieceOfCell = PieceOfCells(mesh);
     const int pieces = 1 + *std::max_element(pieceOfCell.begin(), pieceOfCell.end());
-    CheckPvtuPath(path);
+    RefuseLinkedSummary(path); // SafeFile checks the rest
     const std::string summary = SummaryText(mesh, path, pieces);
     const std::vector<std::string> sources = PieceSources(summary);
     if (static_cast<int>(sources.size()) != pieces)

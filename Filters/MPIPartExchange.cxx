@@ -26,6 +26,7 @@ namespace
 
 constexpr int kPartTag = 7311;
 constexpr int kNoticeTag = 7312;
+constexpr int kAssignmentTag = 7313;
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
 void Check(int status, const char* what)
@@ -106,22 +107,15 @@ public:
   int Ranks() const override { return Size; }
 
   /// Sent without waiting: the message is kept until Flush sees rank 0 has it.
-  void Send(std::vector<char> message) override
+  void Send(std::vector<char> message) override { Post(0, kPartTag, std::move(message), "send a part"); }
+
+  /// Sent without waiting, as a part is: kept until Flush.
+  void Assign(int rank, std::vector<char> assignment) override
   {
-    Outgoing& out = Pending.emplace_back();
-    out.Length = static_cast<std::uint64_t>(message.size());
-    out.Bytes = std::move(message);
-    out.Requests.emplace_back();
-    Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, 0, kPartTag, Parts(), &out.Requests.back()),
-      "send a part's length");
-    for (std::size_t at = 0; at < out.Bytes.size(); at += kPiece)
-    {
-      const int n = static_cast<int>(std::min(kPiece, out.Bytes.size() - at));
-      out.Requests.emplace_back();
-      Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, 0, kPartTag, Parts(), &out.Requests.back()),
-        "send a part");
-    }
+    Post(rank, kAssignmentTag, std::move(assignment), "send a process its parts");
   }
+
+  std::vector<char> ReceiveAssignment() override { return Take(0, kAssignmentTag, "receive this process's parts"); }
 
   void Notify(const std::string& reason) override
   {
@@ -154,24 +148,41 @@ public:
     Pending.clear();
   }
 
-  std::vector<char> Receive(int rank) override
-  {
-    std::uint64_t length = 0;
-    Check(MPI_Recv(&length, 1, MPI_UINT64_T, rank, kPartTag, Parts(), MPI_STATUS_IGNORE),
-      "receive a part's length");
-    std::vector<char> message(static_cast<std::size_t>(length));
-    for (std::size_t at = 0; at < message.size(); at += kPiece)
-    {
-      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
-      Check(MPI_Recv(message.data() + at, n, MPI_BYTE, rank, kPartTag, Parts(), MPI_STATUS_IGNORE),
-        "receive a part");
-    }
-    return message;
-  }
+  std::vector<char> Receive(int rank) override { return Take(rank, kPartTag, "receive a part"); }
 
   std::string Agree(const std::string& failure) override { return FirstFailureOf(failure, Size); }
 
 private:
+  /// A message to `to` without waiting: its length, then pieces of at most kPiece bytes.
+  void Post(int to, int tag, std::vector<char> message, const char* what)
+  {
+    Outgoing& out = Pending.emplace_back();
+    out.Length = static_cast<std::uint64_t>(message.size());
+    out.Bytes = std::move(message);
+    out.Requests.emplace_back();
+    Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, to, tag, Parts(), &out.Requests.back()), what);
+    for (std::size_t at = 0; at < out.Bytes.size(); at += kPiece)
+    {
+      const int n = static_cast<int>(std::min(kPiece, out.Bytes.size() - at));
+      out.Requests.emplace_back();
+      Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, to, tag, Parts(), &out.Requests.back()), what);
+    }
+  }
+
+  /// The next message from `from` with `tag`, as Post sent it.
+  std::vector<char> Take(int from, int tag, const char* what)
+  {
+    std::uint64_t length = 0;
+    Check(MPI_Recv(&length, 1, MPI_UINT64_T, from, tag, Parts(), MPI_STATUS_IGNORE), what);
+    std::vector<char> message(static_cast<std::size_t>(length));
+    for (std::size_t at = 0; at < message.size(); at += kPiece)
+    {
+      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
+      Check(MPI_Recv(message.data() + at, n, MPI_BYTE, from, tag, Parts(), MPI_STATUS_IGNORE), what);
+    }
+    return message;
+  }
+
   std::string ReceiveNotice(int rank)
   {
     MPI_Status status;

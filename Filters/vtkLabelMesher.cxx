@@ -36,6 +36,7 @@
 #include <exception>
 #include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -424,11 +425,26 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   const double quadraticShare = quadratic3D ? share * 0.2 : 0.0;
   const double runShare = (share - quadraticShare) * (this->MeasureOutput ? 0.8 : 1.0);
   const double measureStart = runShare + quadraticShare;
+  // A process other than rank 0 keeps only the slab of the image its parts need, taken once
+  // rank 0 has assigned them; the rest of the converted image is released then.
+  labelmesher::SlabSource slabs;
+  if (exchange && exchange->Rank() != 0)
+  {
+    slabs = [whole = std::make_shared<labelmesher::LabelImage>(std::move(image))](int first, int end) mutable {
+      if (!whole)
+      {
+        throw std::logic_error("the image's slab was asked for twice");
+      }
+      labelmesher::LabelImage slab = labelmesher::LabelImage::Slab(*whole, first, end);
+      whole.reset();
+      return slab;
+    };
+  }
   labelmesher::StreamedResult result;
   try
   {
-    result = labelmesher::MeshAndDecimate(
-      image, mesher, decimation, streaming, labelmesher::ForwardProgress(this, 0.0, runShare), exchange.get());
+    result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming,
+      labelmesher::ForwardProgress(this, 0.0, runShare), exchange.get(), slabs);
   }
   catch (const labelmesher::AbortRequested&)
   {

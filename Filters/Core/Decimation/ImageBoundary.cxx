@@ -32,21 +32,46 @@ ImageBoundary::ImageBoundary(const LabelImage& image)
   if (static_cast<std::size_t>(n[0]) * n[1] * n[2] * 3 >= (std::size_t(1) << 32))
     throw std::invalid_argument("the image is too large for the decimator's face index (2^32 voxel faces)");
   // Faces between voxel (i, j, k) and its +axis neighbour, from i = -1 (the
-  // outside) to n - 1.
+  // outside) to n - 1; of a slab, those whose two voxels it holds.
+  const int slab = image.SlabAxis(), first = image.SlabFirst(), end = image.SlabEnd();
   for (int axis = 0; axis < Dimension; ++axis)
-    for (int k = (axis == 2 ? -1 : 0); k < n[2]; ++k)
-      for (int j = (axis == 1 ? -1 : 0); j < n[1]; ++j)
-        for (int i = (axis == 0 ? -1 : 0); i < n[0]; ++i)
+  {
+    std::array<int, 3> lo{ axis == 0 ? -1 : 0, axis == 1 ? -1 : 0, axis == 2 ? -1 : 0 };
+    std::array<int, 3> hi{ n[0], n[1], n[2] }; // exclusive
+    if (axis == slab)
+    {
+      lo[slab] = first == 0 ? -1 : first;
+      hi[slab] = end == n[slab] ? end : end - 1;
+    }
+    else
+    {
+      lo[slab] = first;
+      hi[slab] = end;
+    }
+    for (int k = lo[2]; k < hi[2]; ++k)
+      for (int j = lo[1]; j < hi[1]; ++j)
+        for (int i = lo[0]; i < hi[0]; ++i)
         {
           const std::int32_t here = image.At(i, j, k);
           const std::int32_t there = image.At(i + (axis == 0), j + (axis == 1), k + (axis == 2));
           if (here != there)
             FaceList.push_back(Face{ { i, j, k }, axis, std::min(here, there), std::max(here, there) });
         }
+  }
 
   for (int a = 0; a < Dimension; ++a)
     Bins[a] = (n[a] + 2) / Bin + 1;
-  const std::size_t bins = static_cast<std::size_t>(Bins[0]) * Bins[1] * Bins[2];
+  // Bin b holds the face centres c with b = floor((c + 1) / Bin): every face
+  // it would hold on the whole image when the voxels along the slab axis
+  // [Bin b - 1, Bin b + 3] are held (or outside the image).
+  const int lastBin = Bins[slab] - 1;
+  FirstBin = first == 0 ? 0 : BinOf(first - 0.5, slab);
+  const int endBin = end == n[slab] ? lastBin : BinOf(end - 0.5, slab);
+  StoredBins = endBin - FirstBin + 1;
+  const auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
+  WholeBins = { first == 0 ? 0 : floorDiv(first + 1 + Bin - 1, Bin), end == n[slab] ? lastBin : floorDiv(end - 4, Bin) };
+  const std::size_t across = slab == 2 ? static_cast<std::size_t>(Bins[0]) * Bins[1] : Bins[0];
+  const std::size_t bins = across * static_cast<std::size_t>(StoredBins);
   BinStart.assign(bins + 1, 0);
   std::vector<std::uint32_t> binOf(FaceList.size());
   for (std::size_t f = 0; f < FaceList.size(); ++f)
@@ -56,7 +81,7 @@ ImageBoundary::ImageBoundary(const LabelImage& image)
     for (int a = Dimension - 1; a >= 0; --a)
     {
       const double centre = face.Voxel[a] + (a == face.Axis ? 0.5 : 0.0);
-      bin = bin * Bins[a] + BinOf(centre, a);
+      bin = bin * Bins[a] + (BinOf(centre, a) - (a == slab ? FirstBin : 0));
     }
     binOf[f] = static_cast<std::uint32_t>(bin);
     ++BinStart[bin + 1];
@@ -74,6 +99,13 @@ ImageBoundary::ImageBoundary(const LabelImage& image)
       const Face& q = FaceList[y];
       return p.Low != q.Low ? p.Low < q.Low : (p.High != q.High ? p.High < q.High : x < y);
     });
+}
+
+int ImageBoundary::SlabMargin(double distance)
+{
+  // A query box reaches `distance` and half a voxel beyond the cells, then a
+  // face's half voxel and a whole bin on either side; two more for rounding.
+  return static_cast<int>(std::ceil(distance)) + 2 * Bin + 2;
 }
 
 int ImageBoundary::BinOf(double coordinate, int axis) const
@@ -117,6 +149,11 @@ void ImageBoundary::Pieces(const Point3& lo, const Point3& hi, std::int32_t low,
     from[a] = BinOf(lo[a] - 0.5, a);
     to[a] = BinOf(hi[a] + 0.5, a);
   }
+  const int slab = Dimension - 1;
+  if (from[slab] < WholeBins[0] || to[slab] > WholeBins[1])
+    throw std::logic_error("the image boundary was asked for faces beyond this process's slab of the image");
+  from[slab] -= FirstBin;
+  to[slab] -= FirstBin;
   for (int bz = from[2]; bz <= to[2]; ++bz)
     for (int by = from[1]; by <= to[1]; ++by)
       for (int bx = from[0]; bx <= to[0]; ++bx)

@@ -2,6 +2,7 @@
 // A part of the streamed pipeline as bytes: fixed-width fields, lengths first.
 #include "Streaming/MeshPart.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -11,7 +12,8 @@ namespace labelmesher
 namespace
 {
 
-constexpr std::uint32_t kMagic = 0x4c4d5031; // "LMP1"
+constexpr std::uint32_t kMagic = 0x4c4d5031;           // "LMP1"
+constexpr std::uint32_t kAssignmentMagic = 0x4c4d4131; // "LMA1"
 
 class Writer
 {
@@ -167,6 +169,47 @@ PartMessage UnpackPartMessage(const std::vector<char>& bytes)
   if (!r.AtEnd())
     throw std::runtime_error("a mesh part's message runs on past its end");
   return message;
+}
+
+std::vector<char> PackPartAssignment(const PartAssignment& a)
+{
+  Writer w;
+  w.Value(kAssignmentMagic);
+  for (int n : a.ImageDimensions)
+    w.Value(static_cast<std::int32_t>(n));
+  w.Value(a.Depth);
+  w.Array(a.Leaves);
+  w.Array(a.Starts);
+  w.Value(a.EndKey);
+  w.Value(a.LeavesBefore);
+  w.Value(a.OctreeLeaves);
+  w.Value(a.SlabFirst);
+  w.Value(a.SlabEnd);
+  return std::move(w.Bytes);
+}
+
+PartAssignment UnpackPartAssignment(const std::vector<char>& bytes)
+{
+  Reader r(bytes);
+  if (r.Value<std::uint32_t>() != kAssignmentMagic)
+    throw std::runtime_error("a process's assignment does not start as one");
+  PartAssignment a;
+  for (int& n : a.ImageDimensions)
+    n = r.Value<std::int32_t>();
+  a.Depth = r.Value<std::int32_t>();
+  a.Leaves = r.Array<OctreeLeaf>();
+  a.Starts = r.Array<std::uint64_t>();
+  a.EndKey = r.Value<std::uint64_t>();
+  a.LeavesBefore = r.Value<std::uint64_t>();
+  a.OctreeLeaves = r.Value<std::uint64_t>();
+  a.SlabFirst = r.Value<std::int32_t>();
+  a.SlabEnd = r.Value<std::int32_t>();
+  if (!r.AtEnd())
+    throw std::runtime_error("a process's assignment runs on past its end");
+  if (a.Starts.empty() || a.Starts.front() != 0 || a.Starts.back() != a.Leaves.size() ||
+    !std::is_sorted(a.Starts.begin(), a.Starts.end()) || a.Depth < 1 || a.Depth > 21)
+    throw std::runtime_error("a process's assignment is not a run of parts");
+  return a;
 }
 
 } // namespace labelmesher

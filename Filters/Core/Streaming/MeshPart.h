@@ -12,9 +12,12 @@
 
 #include "Decimation/DecimationParameters.h"
 #include "Mesh/SimplexMesh.h"
+#include "Octree/LeafBox.h"
 #include "Support/StageClock.h"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,6 +47,23 @@ struct PartMessage
 /// that are not a whole message.
 std::vector<char> PackPartMessage(const PartMessage& message);
 PartMessage UnpackPartMessage(const std::vector<char>& bytes);
+
+/// What rank 0 sends every other process before any part is meshed: the run
+/// of the octree's leaves its parts cover and the slab of the image they need.
+struct PartAssignment
+{
+  std::array<int, 3> ImageDimensions{ 0, 0, 0 }; ///< of the whole image
+  std::int32_t Depth = 0;                         ///< of the octree
+  std::vector<OctreeLeaf> Leaves;                 ///< of its parts, in Morton order
+  /// Where each of its parts starts in Leaves, then Leaves.size(); {0}: no part.
+  std::vector<std::uint64_t> Starts{ 0 };
+  std::uint64_t EndKey = 0; ///< the Morton key just past the last leaf (the next part's, or the octree's end)
+  std::uint64_t LeavesBefore = 0, OctreeLeaves = 0; ///< leaves before the run, and in the octree (for progress)
+  std::int32_t SlabFirst = 0, SlabEnd = 0;          ///< the slices of the image it needs (LabelImage::Slab)
+};
+
+std::vector<char> PackPartAssignment(const PartAssignment& assignment);
+PartAssignment UnpackPartAssignment(const std::vector<char>& bytes);
 
 } // namespace labelmesher
 

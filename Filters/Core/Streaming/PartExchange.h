@@ -5,7 +5,8 @@
 /**
  * @file PartExchange.h
  * How the parts of the block-streamed pipeline (StreamedPipeline.h) reach the
- * process that joins them: each process meshes the parts it owns and every
+ * process that joins them: rank 0 plans the parts and sends every other
+ * process its assignment (its parts' leaves), each process meshes the parts it owns and every
  * process other than rank 0 hands its parts, as bytes (MeshPart.h), to rank 0,
  * in order; one that fails also sends a notice rank 0 looks for between its
  * own blocks, so that a failure ends the run early. The core knows processes
@@ -33,10 +34,15 @@ public:
   /// This process, in [0, Ranks()).
   virtual int Rank() const = 0;
   virtual int Ranks() const = 0;
+  /// On rank 0: `rank`'s assignment, sent once, before any part. It may
+  /// return before `rank` takes it.
+  virtual void Assign(int rank, std::vector<char> assignment) = 0;
+  /// From a rank other than 0: its assignment from rank 0 (waits for it).
+  virtual std::vector<char> ReceiveAssignment() = 0;
   /// From a rank other than 0: the next message to rank 0. It may return
   /// before rank 0 takes it (so that the rank goes on meshing meanwhile).
   virtual void Send(std::vector<char> message) = 0;
-  /// From a rank other than 0: returns once rank 0 has taken every message sent.
+  /// Returns once every message this process sent (parts, assignments) was taken.
   virtual void Flush() {}
   /// On rank 0: the next message from `rank` (messages of one rank arrive in the order sent).
   virtual std::vector<char> Receive(int rank) = 0;

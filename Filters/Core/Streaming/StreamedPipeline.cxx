@@ -366,6 +366,29 @@ private:
   std::size_t Minimum, Next;
 };
 
+/// The leaves a process meshes, in Morton order: every leaf of the octree, or
+/// on a process other than rank 0 of a shared-out run the run of its parts
+/// (PartAssignment).
+struct LeafRun
+{
+  const std::vector<OctreeLeaf>& Leaves;
+  int Dimension, Depth;
+  std::uint64_t EndKey;             ///< the key just past the last leaf
+  bool EveryLeaf;                   ///< the whole octree: one block of it may be the whole mesh
+  std::size_t Before, OctreeLeaves; ///< leaves before the run, and in the octree: for progress only
+
+  /// The keys of leaves [first, last) of the run.
+  KeyRange Keys(std::size_t first, std::size_t last) const
+  {
+    KeyRange range = LeafRunKeys(Leaves, first, last, Dimension, Depth);
+    if (last == Leaves.size())
+      range.End = EndKey;
+    return range;
+  }
+  /// How far into the octree leaf `leaf` of the run lies, in [0, 1].
+  double Progress(std::size_t leaf) const { return double(Before + leaf) / double(std::max<std::size_t>(1, OctreeLeaves)); }
+};
+
 /// Where a part ends: the leaf after its last, and whether it was the whole mesh.
 struct PartRun
 {
@@ -379,10 +402,11 @@ struct PartRun
 /// grow (their keys from `partFirst` on: the part knows no other). When the
 /// part is one block of every leaf, that block is the whole mesh: finished
 /// into `whole` instead.
-PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& leaves, std::size_t partFirst,
+PartRun StreamPart(const PieceContext& context, const LeafRun& run, std::size_t partFirst,
   const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
   MeshPart& part, DecimationResult& whole)
 {
+  const std::vector<OctreeLeaf>& leaves = run.Leaves;
   const LabelImage& image = context.Image;
   const int dimension = image.Dimension();
   const int depth = context.Depth;
@@ -404,7 +428,7 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
   {
     ReleaseFreedMemory(); // the previous block's and border pass's
     // Fill leaves until the block holds BlockCells cells.
-    const double start = blocksStart + blocksShare * double(first) / double(leaves.size());
+    const double start = blocksStart + blocksShare * run.Progress(first);
     if (!observer.Report("fill", start))
       throw AbortRequested{};
     MeshAssembler assembler(dimension);
@@ -415,8 +439,8 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
       FillLeaf(image, leaves[last++], assembler);
       cellEnd.push_back(assembler.NumberOfCells());
     }
-    const bool isWhole = first == 0 && last == leaves.size();
-    const KeyRange keys = LeafRunKeys(leaves, first, last, dimension, depth);
+    const bool isWhole = run.EveryLeaf && first == 0 && last == leaves.size();
+    const KeyRange keys = run.Keys(first, last);
     ++part.Blocks;
     part.LargestBlockCells = std::max(part.LargestBlockCells, assembler.NumberOfCells());
     clock.Finish("fill");
@@ -455,7 +479,7 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
     clock.Finish("block plan");
 
     EditableMesh block(std::move(filled), context.BoxLow, context.BoxHigh);
-    const double share = blocksShare * double(last - first) / double(leaves.size());
+    const double share = blocksShare * (run.Progress(last) - run.Progress(first));
     DecimateInScope(image, context.Boundary, block, decimation, scope, observer, start,
       isWhole ? 0.95 - start : share, part.Counts, clock);
     if (isWhole)
@@ -478,9 +502,9 @@ PartRun StreamPart(const PieceContext& context, const std::vector<OctreeLeaf>& l
       // re-certifies the image faces of all blocks so far (Cassini 1024: 7
       // passes, 71 of 577 s).
       part.LargestAssembledCells = std::max(part.LargestAssembledCells, assembly.Mesh.NumberOfCells());
-      const double at = blocksStart + blocksShare * double(first) / double(leaves.size());
+      const double at = blocksStart + blocksShare * run.Progress(first);
       const std::size_t passFrom = timings.size();
-      DecimateAssembled(context, LeafRunKeys(leaves, partFirst, first, dimension, depth), decimation, settled,
+      DecimateAssembled(context, run.Keys(partFirst, first), decimation, settled,
         assembly, observer, at, part.Counts, clock);
       PrefixStages(timings, passFrom, "border passes: ");
       ++part.BorderPasses;
@@ -576,20 +600,82 @@ std::string Reason(std::exception_ptr error)
   }
 }
 
-/// A rank other than 0: its parts, meshed and sent to rank 0 in order.
-void SendParts(const PieceContext& context, const std::vector<OctreeLeaf>& leaves,
-  const std::vector<std::size_t>& starts, const DecimationParameters& decimation,
-  const StreamingParameters& streaming, const ProgressObserver& observer, PartExchange& exchange)
+/// On rank 0: what process `rank` meshes, its parts being the consecutive run
+/// OwnerOf gives it (none: an assignment of no part). Its slab reaches beyond
+/// its leaves by what every query near its cells reads (ImageBoundary::SlabMargin).
+PartAssignment AssignmentOf(int rank, int ranks, const LabelImage& image, const MesherOctree& octree,
+  const std::vector<std::size_t>& starts, const DecimationParameters& decimation)
 {
+  PartAssignment a;
+  a.ImageDimensions = image.Dimensions;
+  a.Depth = octree.Depth;
+  a.OctreeLeaves = octree.Leaves.size();
   const std::size_t parts = starts.size() - 1;
+  std::size_t from = parts, to = parts;
   for (std::size_t p = 0; p < parts; ++p)
+    if (OwnerOf(p, parts, ranks) == rank)
+    {
+      from = std::min(from, p);
+      to = p + 1;
+    }
+  if (from == parts)
+    return a;
+  const std::vector<OctreeLeaf>& leaves = octree.Leaves;
+  a.Leaves.assign(leaves.begin() + static_cast<std::ptrdiff_t>(starts[from]),
+    leaves.begin() + static_cast<std::ptrdiff_t>(starts[to]));
+  a.Starts.clear();
+  for (std::size_t p = from; p <= to; ++p)
+    a.Starts.push_back(starts[p] - starts[from]);
+  a.LeavesBefore = starts[from];
+  a.EndKey = LeafRunKeys(leaves, starts[from], starts[to], image.Dimension(), octree.Depth).End;
+  const int axis = image.SlabAxis();
+  int low = image.Dimensions[static_cast<std::size_t>(axis)], high = 0;
+  for (const OctreeLeaf& leaf : a.Leaves)
   {
-    if (OwnerOf(p, parts, exchange.Ranks()) != exchange.Rank())
-      continue;
+    low = std::min(low, leaf.Box.Origin[static_cast<std::size_t>(axis)]);
+    high = std::max(high, leaf.Box.Origin[static_cast<std::size_t>(axis)] + leaf.Box.Size);
+  }
+  const int margin =
+    ImageBoundary::SlabMargin(std::max(decimation.ImageToMeshDistance, decimation.MeshToImageDistance));
+  // A run beyond the image's end (the octree's cube is larger) still reads the last slices.
+  const int slices = image.Dimensions[static_cast<std::size_t>(axis)];
+  a.SlabFirst = std::clamp(low - margin, 0, std::max(0, slices - margin));
+  a.SlabEnd = std::clamp(high + margin, a.SlabFirst, slices);
+  return a;
+}
+
+/// A rank other than 0: its assignment from rank 0, its slab of the image,
+/// and its parts, meshed and sent to rank 0 in order.
+void SendParts(const LabelImage& image, const SlabSource& slabs, const DecimationParameters& decimation,
+  const StreamingParameters& streaming, const ProgressObserver& observer, PartExchange& exchange, StageClock& clock)
+{
+  const PartAssignment assigned = UnpackPartAssignment(exchange.ReceiveAssignment());
+  if (assigned.Leaves.empty())
+  {
+    exchange.Flush();
+    return;
+  }
+  const LabelImage slab =
+    slabs ? slabs(assigned.SlabFirst, assigned.SlabEnd) : LabelImage::Slab(image, assigned.SlabFirst, assigned.SlabEnd);
+  if (slab.Dimensions != assigned.ImageDimensions || slab.SlabFirst() > assigned.SlabFirst ||
+    slab.SlabEnd() < assigned.SlabEnd)
+    throw std::logic_error("the slab of the image given is not the one this process's parts need");
+  const int dimension = slab.Dimension(), depth = assigned.Depth;
+  ValidateDecimationParameters(dimension, decimation);
+  const ImageBoundary boundary(slab);
+  const std::vector<VoxelBox> near = FaceNeighbourhoods(boundary, decimation.ImageToMeshDistance, dimension, depth);
+  const std::int32_t extent = 2 * (std::int32_t(1) << depth);
+  const PieceContext context{ slab, boundary, near, depth, { -1, -1, dimension == 2 ? 0 : -1 },
+    { extent - 1, extent - 1, dimension == 2 ? 0 : extent - 1 }, streaming.FreezeNearBorders };
+  const LeafRun run{ assigned.Leaves, dimension, depth, assigned.EndKey, false,
+    static_cast<std::size_t>(assigned.LeavesBefore), static_cast<std::size_t>(assigned.OctreeLeaves) };
+  clock.Finish("block plan");
+  for (std::size_t p = 0; p + 1 < assigned.Starts.size(); ++p)
+  {
     PartMessage message;
     DecimationResult unused;
-    const PartRun run = StreamPart(context, leaves, starts[p], decimation, streaming, observer, message.Part, unused);
-    if (run.Whole || run.End != starts[p + 1])
+    const PartRun ran = StreamPart(context, run, assigned.Starts[p], decimation, streaming, observer, message.Part, unused);
+    if (ran.Whole || ran.End != assigned.Starts[p + 1])
       throw std::logic_error("a part ended at another leaf than the plan's");
     exchange.Send(PackPartMessage(message));
   }
@@ -670,25 +756,36 @@ RunPlan MakeRunPlan(const LabelImage& image, const MesherParameters& mesher, con
 /// MeshAndDecimate, whose failures on a rank other than 0 it reports to rank 0.
 StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
-  PartExchange* exchange)
+  PartExchange* exchange, const SlabSource& slabs)
 {
   const int dimension = image.Dimension();
-  ValidateDecimationParameters(dimension, decimation);
   StreamedResult result;
   DecimationResult& out = result.Decimated;
   std::vector<StageTiming> timings;
   StageClock clock(timings);
 
   // The octree over the whole image: small beside the mesh (one record per
-  // leaf). Every process refines it, finds the same, and with several
-  // processes the same parts; they go on only if all got this far.
+  // leaf). Rank 0 refines it and finds the parts; the others go on only if
+  // it got this far, each with its assignment: its parts' leaves and the
+  // slab of the image they need.
   const int ranks = exchange != nullptr ? exchange->Ranks() : 1;
+  if (ranks > 1 && exchange->Rank() != 0)
+  {
+    const std::string failure = exchange->Agree(std::string());
+    if (!failure.empty())
+      throw AgreedFailure(failure);
+    SendParts(image, slabs, decimation, streaming, observer, *exchange, clock);
+    result.HoldsMesh = false;
+    out.Timings = Coalesced(timings);
+    return result;
+  }
   RunPlan plan;
   if (ranks > 1)
   {
     std::exception_ptr error;
     try
     {
+      ValidateDecimationParameters(dimension, decimation);
       plan = MakeRunPlan(image, mesher, decimation, streaming, observer, true, clock);
     }
     catch (...)
@@ -696,15 +793,19 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
       error = std::current_exception();
     }
     const std::string failure = exchange->Agree(error ? Reason(error) : std::string());
+    if (error)
+      std::rethrow_exception(error);
     if (!failure.empty())
-    {
-      if (error && exchange->Rank() == 0)
-        std::rethrow_exception(error);
       throw AgreedFailure(failure);
-    }
+    for (int rank = 1; rank < ranks; ++rank)
+      exchange->Assign(rank, PackPartAssignment(AssignmentOf(rank, ranks, image, plan.Octree, plan.Starts, decimation)));
+    exchange->Flush();
   }
   else
+  {
+    ValidateDecimationParameters(dimension, decimation);
     plan = MakeRunPlan(image, mesher, decimation, streaming, observer, false, clock);
+  }
   const std::vector<OctreeLeaf>& leaves = plan.Octree.Leaves;
   const std::vector<std::size_t>& starts = plan.Starts;
   const std::vector<VoxelBox>& near = plan.Near;
@@ -713,14 +814,8 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   const int depth = plan.Octree.Depth;
   result.Streaming.Leaves = leaves.size();
   const PieceContext pieces{ image, boundary, near, depth, plan.BoxLow, plan.BoxHigh, streaming.FreezeNearBorders };
+  const LeafRun everyLeaf{ leaves, dimension, depth, std::uint64_t(1) << (dimension * depth), true, 0, leaves.size() };
   clock.Finish("block plan");
-  if (ranks > 1 && exchange->Rank() != 0)
-  {
-    SendParts(pieces, leaves, starts, decimation, streaming, observer, *exchange);
-    result.HoldsMesh = false;
-    out.Timings = Coalesced(timings);
-    return result;
-  }
 
   // Rank 0: the parts, its own meshed here and the others' received, joined
   // in order, with border passes between them as between blocks.
@@ -763,7 +858,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
       const int owner = ranks > 1 ? OwnerOf(pending, starts.size() - 1, ranks) : 0;
       if (owner == 0)
       {
-        const PartRun run = StreamPart(pieces, leaves, first, decimation, streaming, watched, part, out);
+        const PartRun run = StreamPart(pieces, everyLeaf, first, decimation, streaming, watched, part, out);
         if (run.Whole)
         {
           result.Streaming.Parts = 1;
@@ -892,13 +987,13 @@ std::vector<std::int32_t> CellProcesses(const SimplexMesh& mesh, const PartMap& 
 
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, const ProgressObserver& observer,
-  PartExchange* exchange)
+  PartExchange* exchange, const SlabSource& slabs)
 {
   if (exchange == nullptr || exchange->Ranks() < 2 || exchange->Rank() == 0)
-    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange);
+    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange, slabs);
   try
   {
-    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange);
+    return MeshAndDecimateOrJoin(image, mesher, decimation, streaming, observer, exchange, slabs);
   }
   catch (const AgreedFailure&)
   {

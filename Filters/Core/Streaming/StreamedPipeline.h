@@ -40,7 +40,10 @@
  * Parts: the blocks are grouped PartBlocks to a part, the unit one process
  * takes under MPI (PartExchange.h). A part knows nothing of the others: its
  * blocks settle image faces among themselves only, and its border passes
- * cover its own keys. Rank 0 joins the parts in order, with border passes
+ * cover its own keys. Rank 0 refines the octree, finds the parts and sends
+ * every other process the leaves of its parts (PartAssignment); that process
+ * reads only the slab of the image they need, and of its boundary only the
+ * faces in that slab. Rank 0 joins the parts in order, with border passes
  * between them by the blocks' rule, then runs the last pass. The blocks and
  * parts depend on the image, BlockCells and PartBlocks only, so the mesh is
  * the same on any number of threads and of processes; with another BlockCells
@@ -54,6 +57,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace labelmesher
@@ -125,20 +129,27 @@ struct StreamedResult
   PartMap Parts;
 };
 
+/// Where a process other than rank 0 of a shared-out run takes its part of the
+/// image from: the slices [first, end) along the last axis (z in 3D, y in 2D)
+/// as LabelImage::Slab makes them, or a LabelImage holding at least those.
+using SlabSource = std::function<LabelImage(int first, int end)>;
+
 /// Meshes `image` with `mesher` and decimates with `decimation` block by
 /// block. Throws std::invalid_argument for bad input or parameters (as
 /// MeshLabelImage and DecimateMesh) and AbortRequested when `observer` says stop.
-/// With `exchange` of more than one rank, every process passes the whole
-/// image and the same parameters; each meshes the parts it owns (consecutive
-/// parts to a process), rank 0 receives the others' and returns the mesh, the
-/// others return none (HoldsMesh false). A process that fails tells rank 0,
+/// With `exchange` of more than one rank, every process passes the same
+/// parameters and rank 0 the whole image; each meshes the parts it owns
+/// (consecutive parts to a process), rank 0 receives the others' and returns
+/// the mesh, the others return none (HoldsMesh false). A process other than
+/// rank 0 reads only the slab of the image its parts need: from `slabs` when
+/// given (then `image` is not read and may be empty), else copied from `image`. A process that fails tells rank 0,
 /// which throws std::runtime_error naming it ("process R of N: reason")
 /// after taking every part still on its way; rank 0 looks for such a notice
 /// whenever it reports progress, so it stops then, not when it reaches the
 /// failed process's part.
 StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming = {},
-  const ProgressObserver& observer = {}, PartExchange* exchange = nullptr);
+  const ProgressObserver& observer = {}, PartExchange* exchange = nullptr, const SlabSource& slabs = {});
 
 } // namespace labelmesher
 

@@ -20,11 +20,19 @@
  * image is 1 GiB at one byte, 4 GiB at four). Writing a label that does not
  * fit widens the storage once; readers see int32 labels either way.
  *
+ * A slab (LabelImage::Slab) holds only the voxels whose last coordinate (z in
+ * 3D, y in 2D) lies in a range: what a process of a run shared out over
+ * several needs for its parts (Streaming/StreamedPipeline.h). Its Dimensions
+ * are the whole image's; reading a voxel of the image it does not hold throws.
+ *
  * Physical placement (origin, spacing, direction) is applied by the VTK adapter.
  */
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -47,6 +55,43 @@ public:
     Allocate();
   }
 
+  /// The slices [first, end) of `whole` along its last axis, copied (both
+  /// clamped to the image).
+  static LabelImage Slab(const LabelImage& whole, int first, int end)
+  {
+    const int axis = whole.SlabAxis();
+    first = std::max(0, first);
+    end = std::min(end, whole.Dimensions[static_cast<std::size_t>(axis)]);
+    if (first < whole.First || end > whole.SlabEnd())
+      throw std::invalid_argument("a slab of an image must lie in the slices it holds");
+    LabelImage slab;
+    slab.Dimensions = whole.Dimensions;
+    slab.Width = whole.Width;
+    slab.First = first;
+    slab.End = std::max(first, end);
+    const std::size_t slice = axis == 2 ? std::size_t(whole.Dimensions[0]) * whole.Dimensions[1] : whole.Dimensions[0];
+    slab.Offset = slice * static_cast<std::size_t>(first);
+    slab.Voxels = slice * static_cast<std::size_t>(slab.End - first);
+    slab.Allocate();
+    for (std::size_t v = 0; v < slab.Voxels; ++v)
+      slab.SetLabel(v, whole.Label(slab.Offset + v - whole.Offset));
+    return slab;
+  }
+
+  /// The axis a slab is cut along: the last one (z in 3D, y in 2D).
+  int SlabAxis() const { return Dimension() - 1; }
+  /// The slices held along SlabAxis: [SlabFirst, SlabEnd) (the whole image unless a slab).
+  int SlabFirst() const { return First; }
+  int SlabEnd() const { return std::min(End, Dimensions[static_cast<std::size_t>(SlabAxis())]); }
+  bool IsSlab() const { return End != kWhole; }
+  /// Voxel (i, j, k) of the image is held (any voxel but those beyond a slab).
+  bool Holds(int i, int j, int k) const
+  {
+    (void)i;
+    const int c = Dimensions[2] == 1 ? j : k;
+    return c >= First && c < End;
+  }
+
   /// The narrowest storage that holds every label in [smallest, largest].
   static int BytesForLabels(std::int64_t smallest, std::int64_t largest)
   {
@@ -65,9 +110,10 @@ public:
     return i >= 0 && j >= 0 && k >= 0 && i < Dimensions[0] && j < Dimensions[1] &&
       k < Dimensions[2];
   }
+  /// Where voxel (i, j, k), which must be held, is stored.
   std::size_t Index(int i, int j, int k) const
   {
-    return (static_cast<std::size_t>(k) * Dimensions[1] + j) * Dimensions[0] + i;
+    return (static_cast<std::size_t>(k) * Dimensions[1] + j) * Dimensions[0] + i - Offset;
   }
 
   /// Label of the voxel at `index` (x fastest).
@@ -84,7 +130,15 @@ public:
     }
   }
   /// Label of voxel (i, j, k); voxels outside the image are background (0).
-  std::int32_t At(int i, int j, int k) const { return Contains(i, j, k) ? Label(Index(i, j, k)) : 0; }
+  /// Throws std::logic_error for a voxel of the image a slab does not hold.
+  std::int32_t At(int i, int j, int k) const
+  {
+    if (!Contains(i, j, k))
+      return 0;
+    if (!Holds(i, j, k))
+      throw std::logic_error("a voxel beyond this process's slab of the image was read");
+    return Label(Index(i, j, k));
+  }
 
   void SetLabel(std::size_t index, std::int32_t label)
   {
@@ -162,7 +216,7 @@ public:
 
   friend bool operator==(const LabelImage& a, const LabelImage& b)
   {
-    if (a.Dimensions != b.Dimensions || a.Voxels != b.Voxels)
+    if (a.Dimensions != b.Dimensions || a.Voxels != b.Voxels || a.First != b.First || a.End != b.End)
       return false;
     if (a.Width == b.Width)
       return a.Labels8 == b.Labels8 && a.Labels16 == b.Labels16 && a.Labels32 == b.Labels32;
@@ -183,7 +237,7 @@ private:
   void Widen(int width)
   {
     LabelImage wider(0, 0, 0, width);
-    wider.Voxels = Voxels;
+    wider.Voxels = Voxels; // a slab's storage only: First, End and Offset stay
     wider.Allocate();
     for (std::size_t v = 0; v < Voxels; ++v)
       wider.SetLabel(v, Label(v));
@@ -193,7 +247,12 @@ private:
     Width = width;
   }
 
+  static constexpr int kWhole = std::numeric_limits<int>::max();
   std::size_t Voxels = 0;
+  // A slab holds slices [First, End) along SlabAxis(), stored from Offset
+  // (the index of its first voxel in the whole image); End is kWhole otherwise.
+  int First = 0, End = kWhole;
+  std::size_t Offset = 0;
   int Width = 1; ///< bytes per label: 1, 2 or 4; the one vector of that width holds the labels
   std::vector<std::uint8_t> Labels8;
   std::vector<std::uint16_t> Labels16;

@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <map>
 #include <sstream>
@@ -186,27 +187,40 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
 }
 
 /// The pipeline on `ranks` processes; rank `failing` (if any) is stopped by
-/// its progress observer at its first report of stage `stopAt`.
+/// its progress observer at its first report of stage `stopAt`. Every rank
+/// but 0 takes only its slab of the image (recorded in `slabs`, if given).
 StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1,
-  const std::string& stopAt = "", const ProgressObserver& rootObserver = {})
+  const std::string& stopAt = "", const ProgressObserver& rootObserver = {},
+  std::vector<std::array<int, 2>>* slabs = nullptr)
 {
   testing::QueuedRun run;
+  run.AssignFirst = [&] {
+    testing::AssignBeforehand(run, ranks, [&](testing::QueuedPartExchange& zero) {
+      MeshAndDecimate(image, mesher, decimation, streaming, {}, &zero);
+    });
+  };
   const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
+  const SlabSource slabOf = [&](int first, int end) {
+    if (slabs != nullptr)
+      slabs->push_back({ first, end });
+    return LabelImage::Slab(image, first, end);
+  };
+  const LabelImage none; // ranks other than 0 read only their slab
   for (int rank = ranks - 1; rank > 0; --rank)
   {
     testing::QueuedPartExchange exchange(rank, ranks, run);
     if (rank == failing)
     {
-      EXPECT_ANY_THROW(MeshAndDecimate(image, mesher, decimation, streaming, stop, &exchange));
+      EXPECT_ANY_THROW(MeshAndDecimate(none, mesher, decimation, streaming, stop, &exchange, slabOf));
       continue;
     }
     if (std::any_of(run.Failures.begin(), run.Failures.end(), [](const auto& f) { return !f.second.empty(); }))
     {
-      EXPECT_THROW(MeshAndDecimate(image, mesher, decimation, streaming, {}, &exchange), std::runtime_error);
+      EXPECT_THROW(MeshAndDecimate(none, mesher, decimation, streaming, {}, &exchange, slabOf), std::runtime_error);
       continue;
     }
-    const StreamedResult other = MeshAndDecimate(image, mesher, decimation, streaming, {}, &exchange);
+    const StreamedResult other = MeshAndDecimate(none, mesher, decimation, streaming, {}, &exchange, slabOf);
     EXPECT_FALSE(other.HoldsMesh);
     EXPECT_TRUE(other.Decimated.Mesh.Points.empty());
   }
@@ -220,6 +234,8 @@ StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesh
         EXPECT_TRUE(queue.empty()) << "rank 0 left a message of rank " << rank;
       for (const auto& [rank, notices] : Run.Notices)
         EXPECT_TRUE(notices.empty()) << "rank 0 left a failure notice of rank " << rank;
+      EXPECT_TRUE(Run.Reassigned.empty() || Run.Reassigned == Run.Assignments)
+        << "rank 0 assigned other parts than those the processes meshed";
     }
   } check{ run };
   return MeshAndDecimate(image, mesher, decimation, streaming, rootObserver, &root);
@@ -254,6 +270,43 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfProcesses)
   }
 }
 
+TEST(StreamedPipeline, AProcessReadsOnlyTheSlabItsPartsNeed)
+{
+  // Images tall along the slab axis, so that the parts of a process other
+  // than rank 0 need a fraction of them: the same mesh as one process, every
+  // slab within the image and the slabs together short of every process
+  // holding the whole (the memory they save).
+  for (int dimension : { 2, 3 })
+  {
+    const std::uint64_t seed = dimension == 2 ? 912102 : 912103;
+    const auto random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+    const LabelImage image = testing::StackedAlongLastAxis(random.Image, dimension == 2 ? 6 : 4);
+    const MesherParameters mesher = testing::DrawDistanceBounds(seed);
+    const DecimationParameters decimation = testing::DrawDecimationParameters(seed, dimension, mesher);
+    StreamingParameters streaming;
+    streaming.BlockCells = dimension == 2 ? 60 : 600;
+    streaming.PartBlocks = 1;
+    const StreamedResult one = MeshAndDecimate(image, mesher, decimation, streaming);
+    ASSERT_GE(one.Streaming.Parts, 6u) << "dimension " << dimension;
+    const int slices = image.Dimensions[static_cast<std::size_t>(image.SlabAxis())];
+    for (int ranks : { 3, 6 })
+    {
+      std::vector<std::array<int, 2>> slabs;
+      const StreamedResult shared =
+        MeshOnRanks(image, mesher, decimation, streaming, ranks, -1, "", {}, &slabs);
+      EXPECT_TRUE(SameMesh(one.Decimated.Mesh, shared.Decimated.Mesh)) << ranks << " processes, dimension " << dimension;
+      ASSERT_EQ(slabs.size(), static_cast<std::size_t>(ranks - 1));
+      int held = 0;
+      for (const auto& [first, end] : slabs)
+      {
+        EXPECT_TRUE(0 <= first && first < end && end <= slices) << first << " " << end;
+        held += end - first;
+      }
+      EXPECT_LT(held, (ranks - 1) * slices) << "every process held the whole image, dimension " << dimension;
+    }
+  }
+}
+
 TEST(StreamedPipeline, OnePartIsTheBlocksOfOneProcess)
 {
   // PartBlocks 0: every block in one part, the pipeline as before parts
@@ -282,34 +335,62 @@ TEST(StreamedPipeline, AProcessThatFailsIsNamedByRankZero)
   StreamingParameters streaming;
   streaming.BlockCells = 300;
   streaming.PartBlocks = 1;
-  // Stopped while refining the octree (every rank hears of it before any
-  // part is meshed: here only a rank that runs before the others can show
-  // that, the highest) or while filling a block (its reason comes in place
-  // of its part).
-  for (const std::string stage : { "octree", "fill" })
-    for (int failing : { 1, 2 })
+  // Stopped while filling a block: its reason comes in place of its part.
+  for (int failing : { 1, 2 })
+  {
+    // Rank 0 runs last here, so the failure's notice is there before it
+    // fills its first block: it must stop at once, not after meshing its part.
+    std::vector<std::string> rootStages;
+    const ProgressObserver record{ [&](const std::string& s, double) {
+      rootStages.push_back(s);
+      return true;
+    } };
+    try
     {
-      if (stage == "octree" && failing != 2)
-        continue;
-      // Rank 0 runs last here, so the failure's notice is there before it
-      // fills its first block: it must stop at once, not after meshing its part.
-      std::vector<std::string> rootStages;
-      const ProgressObserver record{ [&](const std::string& s, double) {
-        rootStages.push_back(s);
-        return true;
-      } };
-      try
-      {
-        MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing, stage, record);
-        ADD_FAILURE() << "rank 0 did not fail with process " << failing << " stopped at " << stage;
-      }
-      catch (const std::runtime_error& e)
-      {
-        EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped") << stage;
-      }
-      EXPECT_EQ(std::count(rootStages.begin(), rootStages.end(), "fill"), 0)
-        << "rank 0 filled a block after process " << failing << " had failed";
+      MeshOnRanks(random.Image, mesher, decimation, streaming, 3, failing, "fill", record);
+      ADD_FAILURE() << "rank 0 did not fail with process " << failing << " stopped";
     }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_EQ(std::string(e.what()), "process " + std::to_string(failing) + " of 3: stopped");
+    }
+    EXPECT_EQ(std::count(rootStages.begin(), rootStages.end(), "fill"), 0)
+      << "rank 0 filled a block after process " << failing << " had failed";
+  }
+}
+
+TEST(StreamedPipeline, AFailureWhilePlanningStopsEveryProcess)
+{
+  // Rank 0 alone refines the octree and finds the parts: stopped there, it
+  // says why itself, and every other process hears of it before it asks for
+  // its parts (run first here, so that the others see its failure).
+  const auto random = testing::GenerateRandomLabelImageWithDescription(912007, 3);
+  const MesherParameters mesher = testing::DrawDistanceBounds(912007);
+  StreamingParameters streaming;
+  streaming.BlockCells = 300;
+  streaming.PartBlocks = 1;
+  testing::QueuedRun run;
+  const ProgressObserver stop{ [](const std::string& stage, double) { return stage != "octree"; } };
+  testing::QueuedPartExchange zero(0, 3, run);
+  EXPECT_THROW(MeshAndDecimate(random.Image, mesher, {}, streaming, stop, &zero), AbortRequested);
+  for (int rank : { 2, 1 })
+  {
+    testing::QueuedPartExchange exchange(rank, 3, run);
+    try
+    {
+      MeshAndDecimate(LabelImage(), mesher, {}, streaming, {}, &exchange, [](int, int) -> LabelImage {
+        throw std::logic_error("a process read its slab after rank 0 had failed");
+      });
+      ADD_FAILURE() << "process " << rank << " went on after rank 0 had failed";
+    }
+    catch (const std::runtime_error& e)
+    {
+      EXPECT_EQ(std::string(e.what()), "stopped");
+    }
+  }
+  EXPECT_TRUE(run.Assignments.empty() && run.Reassigned.empty());
+  for (const auto& [rank, queue] : run.Queues)
+    EXPECT_TRUE(queue.empty()) << "process " << rank << " sent a part";
 }
 
 TEST(StreamedPipeline, BorderPassesKeepTheAssembledBlocksSmall)

@@ -7,14 +7,18 @@
  * Ranks of the streamed pipeline run one after another in one process
  * (Streaming/PartExchange.h without MPI): each rank other than 0 runs first,
  * highest first, queuing its messages; then rank 0 takes them. Agree sees the
- * failures of the ranks that ran before. For the tests and the part balance
- * benchmark.
+ * failures of the ranks that ran before. The others need rank 0's
+ * assignments before it runs: the first to ask runs QueuedRun::AssignFirst,
+ * which runs rank 0 on a run of its own until it has assigned every process
+ * (AssignBeforehand); rank 0's assignments of the real run are kept in
+ * Reassigned, to be compared. For the tests and the part balance benchmark.
  */
 
 #include "Streaming/PartExchange.h"
 
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -32,6 +36,14 @@ struct QueuedRun
   std::map<int, std::string> Failures;
   std::map<int, std::size_t> BytesSent;
   std::map<int, std::deque<std::string>> Notices;
+  std::map<int, std::vector<char>> Assignments, Reassigned;
+  std::function<void()> AssignFirst;
+  bool StopOnceAssigned = false; ///< a run of AssignBeforehand's
+};
+
+/// Thrown by rank 0's last assignment in a run of AssignBeforehand's.
+struct EveryProcessAssigned
+{
 };
 
 class QueuedPartExchange final : public PartExchange
@@ -45,6 +57,26 @@ public:
   }
   int Rank() const override { return RankOfThis; }
   int Ranks() const override { return Size; }
+  void Assign(int rank, std::vector<char> assignment) override
+  {
+    if (!Run.StopOnceAssigned)
+    {
+      Run.Reassigned[rank] = std::move(assignment);
+      return;
+    }
+    Run.Assignments[rank] = std::move(assignment);
+    if (rank == Size - 1)
+      throw EveryProcessAssigned{};
+  }
+  std::vector<char> ReceiveAssignment() override
+  {
+    if (Run.Assignments.empty() && Run.AssignFirst)
+      Run.AssignFirst();
+    const auto it = Run.Assignments.find(RankOfThis);
+    if (it == Run.Assignments.end())
+      throw std::logic_error("rank " + std::to_string(RankOfThis) + " waits for an assignment rank 0 never sends");
+    return it->second;
+  }
   void Send(std::vector<char> message) override
   {
     Run.BytesSent[RankOfThis] += message.size();
@@ -91,6 +123,25 @@ private:
   int RankOfThis, Size;
   QueuedRun& Run;
 };
+
+/// Rank 0's assignments for `run`, made by `rankZero(exchange)` (rank 0's
+/// MeshAndDecimate) on a run of its own that stops once every process is
+/// assigned; a failure before that is rank 0's own, thrown.
+template <typename RankZero>
+void AssignBeforehand(QueuedRun& run, int ranks, RankZero&& rankZero)
+{
+  QueuedRun first;
+  first.StopOnceAssigned = true;
+  QueuedPartExchange exchange(0, ranks, first);
+  try
+  {
+    rankZero(exchange);
+  }
+  catch (const EveryProcessAssigned&)
+  {
+  }
+  run.Assignments = std::move(first.Assignments);
+}
 
 } // namespace testing
 } // namespace labelmesher

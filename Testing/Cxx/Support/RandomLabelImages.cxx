@@ -791,5 +791,18 @@ std::vector<std::int32_t> PresentLabels(const LabelImage& image)
   return present;
 }
 
+LabelImage StackedAlongLastAxis(const LabelImage& image, int copies)
+{
+  const auto& n = image.Dimensions;
+  const bool flat = n[2] == 1;
+  LabelImage tall(n[0], flat ? n[1] * copies : n[1], flat ? 1 : n[2] * copies, image.BytesPerLabel());
+  for (int c = 0; c < copies; ++c)
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+          tall(i, flat ? j + c * n[1] : j, flat ? k : k + c * n[2]) = image(i, j, k);
+  return tall;
+}
+
 } // namespace testing
 } // namespace labelmesher

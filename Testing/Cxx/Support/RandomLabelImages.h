@@ -155,6 +155,10 @@ bool HasForegroundOnBorder(const LabelImage& image);
 /// Distinct non-zero labels present, sorted.
 std::vector<std::int32_t> PresentLabels(const LabelImage& image);
 
+/// `image` repeated `copies` times along its last axis (z in 3D, y in 2D):
+/// tall enough that a process's slab (LabelImage::Slab) is a fraction of it.
+LabelImage StackedAlongLastAxis(const LabelImage& image, int copies);
+
 } // namespace testing
 } // namespace labelmesher
 

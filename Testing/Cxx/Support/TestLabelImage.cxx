@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace labelmesher
@@ -112,6 +113,42 @@ TEST(LabelImage, AWriteThroughAReferenceReadsBack)
   EXPECT_EQ(image.At(0, 0, 0), 300);
   const LabelImage& view = image;
   EXPECT_EQ(view(0, 0, 0), 300);
+}
+
+TEST(LabelImage, ASlabHoldsItsSlicesOnlyAndRefusesTheOthers)
+{
+  for (int dimension : { 2, 3 })
+  {
+    const int nz = dimension == 3 ? 9 : 1, ny = dimension == 3 ? 4 : 9;
+    LabelImage whole(5, ny, nz);
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < 5; ++i)
+          whole(i, j, k) = 300 + i + 7 * j + 31 * k; // two bytes
+    const LabelImage slab = LabelImage::Slab(whole, 3, 6);
+    EXPECT_TRUE(slab.IsSlab());
+    EXPECT_EQ(slab.Dimensions, whole.Dimensions);
+    EXPECT_EQ(slab.BytesPerLabel(), 2);
+    EXPECT_EQ(slab.SlabFirst(), 3);
+    EXPECT_EQ(slab.SlabEnd(), 6);
+    EXPECT_EQ(slab.NumberOfVoxels(), whole.NumberOfVoxels() / 3);
+    for (int k = -1; k <= nz; ++k)
+      for (int j = -1; j <= ny; ++j)
+        for (int i = -1; i <= 5; ++i)
+        {
+          const int along = dimension == 3 ? k : j;
+          if (!whole.Contains(i, j, k) || (along >= 3 && along < 6))
+            EXPECT_EQ(slab.At(i, j, k), whole.At(i, j, k)) << i << " " << j << " " << k;
+          else
+            EXPECT_THROW(slab.At(i, j, k), std::logic_error) << i << " " << j << " " << k;
+        }
+    // Clamped to the image; a slab of a slab only within its slices.
+    EXPECT_EQ(LabelImage::Slab(whole, -4, 40).NumberOfVoxels(), whole.NumberOfVoxels());
+    EXPECT_EQ(LabelImage::Slab(slab, 4, 5).At(2, dimension == 3 ? 1 : 4, dimension == 3 ? 4 : 0),
+      whole.At(2, dimension == 3 ? 1 : 4, dimension == 3 ? 4 : 0));
+    EXPECT_THROW(LabelImage::Slab(slab, 2, 5), std::invalid_argument);
+    EXPECT_FALSE(whole.IsSlab());
+  }
 }
 
 } // namespace

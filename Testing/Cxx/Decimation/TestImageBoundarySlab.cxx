@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The image boundary of a slab (what a process of a shared-out run holds) is the whole image's
+// in its interior: the same faces, in the same order, and a query there returns the same pieces
+// in the same order (their order reaches the fidelity test's sums); a query that reaches the
+// slab's edge throws instead of answering with faces missing. On random 2D and 3D images, tall
+// along the slab axis so that a slab is a fraction of them.
+#include "Decimation/ImageBoundary.h"
+#include "RandomLabelImages.h"
+#include "Support/LabelImage.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace labelmesher
+{
+namespace
+{
+
+bool SameFace(const ImageBoundary::Face& a, const ImageBoundary::Face& b)
+{
+  return a.Voxel == b.Voxel && a.Axis == b.Axis && a.Low == b.Low && a.High == b.High;
+}
+
+bool SamePieces(const std::vector<ConvexPiece>& a, const std::vector<ConvexPiece>& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t p = 0; p < a.size(); ++p)
+  {
+    if (a[p].Count != b[p].Count)
+      return false;
+    for (int c = 0; c < a[p].Count; ++c)
+      if (a[p].Points[static_cast<std::size_t>(c)] != b[p].Points[static_cast<std::size_t>(c)])
+        return false;
+  }
+  return true;
+}
+
+TEST(ImageBoundarySlab, IsTheWholeImagesBoundaryInItsInterior)
+{
+  for (std::uint64_t seed = 951000; seed < 951012; ++seed)
+  {
+    const int dimension = seed % 2 == 0 ? 2 : 3;
+    const auto random = testing::GenerateRandomLabelImageWithDescription(seed, dimension);
+    const LabelImage image = testing::StackedAlongLastAxis(random.Image, 4);
+    const int axis = image.SlabAxis(), slices = image.Dimensions[static_cast<std::size_t>(axis)];
+    const ImageBoundary whole(image);
+    std::mt19937_64 draw(seed);
+    for (int trial = 0; trial < 4; ++trial)
+    {
+      const int first = std::uniform_int_distribution<int>(0, slices / 2)(draw);
+      const int end = trial == 0 ? slices : std::uniform_int_distribution<int>(first + 1, slices)(draw);
+      const LabelImage slab = LabelImage::Slab(image, first, end);
+      const ImageBoundary part(slab);
+      // The faces whose two voxels the slab holds, in the whole image's order.
+      std::vector<ImageBoundary::Face> expected;
+      for (const ImageBoundary::Face& f : whole.Faces())
+      {
+        const int low = f.Voxel[static_cast<std::size_t>(axis)], high = low + (f.Axis == axis ? 1 : 0);
+        const auto held = [&](int c) { return c < 0 || c >= slices || (c >= first && c < end); };
+        if (held(low) && held(high))
+          expected.push_back(f);
+      }
+      ASSERT_EQ(part.Faces().size(), expected.size()) << random.Describe() << "slab " << first << " " << end;
+      for (std::size_t f = 0; f < expected.size(); ++f)
+        ASSERT_TRUE(SameFace(part.Faces()[f], expected[f])) << "face " << f << " of slab " << first << " " << end;
+
+      // Queries around the slab's cells: within SlabMargin(h) of its edges, the same pieces.
+      const double h = std::uniform_real_distribution<double>(0.0, 3.0)(draw);
+      const int margin = ImageBoundary::SlabMargin(h);
+      const int low = first == 0 ? -1 : first + margin, high = end == slices ? slices : end - margin;
+      for (int query = 0; query < 40 && low < high; ++query)
+      {
+        Point3 lo{ 0, 0, 0 }, hi{ 0, 0, 0 };
+        for (int a = 0; a < dimension; ++a)
+        {
+          const int n = image.Dimensions[static_cast<std::size_t>(a)];
+          const double from = a == axis ? low : -1, to = a == axis ? high - 1 : n;
+          const double x = std::uniform_real_distribution<double>(from, to)(draw);
+          const double y = std::uniform_real_distribution<double>(x, std::min(to, x + 3.0))(draw);
+          lo[static_cast<std::size_t>(a)] = x - h;
+          hi[static_cast<std::size_t>(a)] = y + h;
+        }
+        for (const ImageBoundary::Face& f : { whole.Faces().front(), whole.Faces().back() })
+        {
+          std::vector<ConvexPiece> fromWhole, fromSlab;
+          whole.Pieces(lo, hi, f.Low, f.High, fromWhole);
+          part.Pieces(lo, hi, f.Low, f.High, fromSlab);
+          EXPECT_TRUE(SamePieces(fromWhole, fromSlab)) << "slab " << first << " " << end << " query " << query;
+        }
+      }
+      // A query reaching beyond the slab is refused, not answered in part.
+      if (first > 0)
+      {
+        Point3 lo{ 0, 0, 0 }, hi{ 1, 1, 1 };
+        lo[static_cast<std::size_t>(axis)] = first - 1.0;
+        hi[static_cast<std::size_t>(axis)] = first + 1.0;
+        std::vector<ConvexPiece> out;
+        EXPECT_THROW(part.Pieces(lo, hi, 0, 1, out), std::logic_error) << "slab " << first << " " << end;
+      }
+    }
+  }
+}
+
+} // namespace
+} // namespace labelmesher

@@ -130,9 +130,12 @@ int main(int argc, char* argv[])
     testing::QueuedRun run;
     // The others start once rank 0 has planned the parts and sent their assignments.
     start = std::chrono::steady_clock::now();
-    testing::AssignBeforehand(run, ranks, [&](testing::QueuedPartExchange& zero) {
-      MeshAndDecimate(image, mesher, decimation, streaming, {}, &zero);
-    });
+    if (ranks > 1)
+    {
+      testing::AssignBeforehand(run, ranks, [&](testing::QueuedPartExchange& zero) {
+        MeshAndDecimate(image, mesher, decimation, streaming, {}, &zero);
+      });
+    }
     const double planSeconds = Seconds(start);
     std::vector<double> seconds(static_cast<std::size_t>(ranks), 0.0);
     for (int r = ranks - 1; r >= 0; --r)
@@ -150,7 +153,7 @@ int main(int argc, char* argv[])
         // last pass (and the border passes between parts) waits for the slowest rank.
         const double joining = JoiningSeconds(result.Decimated.Timings);
         const double meshing0 = seconds[0] - joining;
-        const double slowest = *std::max_element(seconds.begin() + 1, seconds.end());
+        const double slowest = ranks > 1 ? *std::max_element(seconds.begin() + 1, seconds.end()) : 0.0;
         const double mean = std::accumulate(seconds.begin() + 1, seconds.end(), meshing0) / ranks;
         const double largest = std::max(meshing0, slowest);
         std::printf("%6d %9.2f %9.2f %9.2f %8.2f %12zu %10.2f %9.2f %s\n", ranks, largest, mean, seconds[0],

@@ -175,6 +175,12 @@ std::vector<char> PackPartAssignment(const PartAssignment& a)
 {
   Writer w;
   w.Value(kAssignmentMagic);
+  w.Value(static_cast<std::uint8_t>(a.Failed));
+  if (a.Failed)
+  {
+    w.Text(a.Reason);
+    return std::move(w.Bytes);
+  }
   for (int n : a.ImageDimensions)
     w.Value(static_cast<std::int32_t>(n));
   w.Value(a.Depth);
@@ -194,6 +200,14 @@ PartAssignment UnpackPartAssignment(const std::vector<char>& bytes)
   if (r.Value<std::uint32_t>() != kAssignmentMagic)
     throw std::runtime_error("a process's assignment does not start as one");
   PartAssignment a;
+  a.Failed = r.Value<std::uint8_t>() != 0;
+  if (a.Failed)
+  {
+    a.Reason = r.Text();
+    if (!r.AtEnd())
+      throw std::runtime_error("a process's assignment runs on past its end");
+    return a;
+  }
   for (int& n : a.ImageDimensions)
     n = r.Value<std::int32_t>();
   a.Depth = r.Value<std::int32_t>();

@@ -52,6 +52,8 @@ PartMessage UnpackPartMessage(const std::vector<char>& bytes);
 /// of the octree's leaves its parts cover and the slab of the image they need.
 struct PartAssignment
 {
+  bool Failed = false; ///< rank 0 could not make the assignments: Reason says why, nothing else is set
+  std::string Reason;
   std::array<int, 3> ImageDimensions{ 0, 0, 0 }; ///< of the whole image
   std::int32_t Depth = 0;                         ///< of the octree
   std::vector<OctreeLeaf> Leaves;                 ///< of its parts, in Morton order

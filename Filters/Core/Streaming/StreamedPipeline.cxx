@@ -600,6 +600,13 @@ std::string Reason(std::exception_ptr error)
   }
 }
 
+/// A failure every rank has heard of (PartExchange::Agree, or rank 0's
+/// in place of an assignment): not sent again.
+struct AgreedFailure : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
 /// On rank 0: what process `rank` meshes, its parts being the consecutive run
 /// OwnerOf gives it (none: an assignment of no part). Its slab reaches beyond
 /// its leaves by what every query near its cells reads (ImageBoundary::SlabMargin).
@@ -650,6 +657,8 @@ void SendParts(const LabelImage& image, const SlabSource& slabs, const Decimatio
   const StreamingParameters& streaming, const ProgressObserver& observer, PartExchange& exchange, StageClock& clock)
 {
   const PartAssignment assigned = UnpackPartAssignment(exchange.ReceiveAssignment());
+  if (assigned.Failed)
+    throw AgreedFailure(ProcessFailure(0, exchange.Ranks(), assigned.Reason));
   if (assigned.Leaves.empty())
   {
     exchange.Flush();
@@ -693,12 +702,6 @@ void SendFailure(PartExchange& exchange, std::exception_ptr error)
   exchange.Send(PackPartMessage(failure));
   exchange.Flush();
 }
-
-/// A failure every rank has heard of (PartExchange::Agree): not sent again.
-struct AgreedFailure : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 /// A part's counts into the run's (its stage times are the meshing process's own: rank 0 adds
 /// those of its parts, and the others' wait shows as its "waiting for other processes").
@@ -797,8 +800,29 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
       std::rethrow_exception(error);
     if (!failure.empty())
       throw AgreedFailure(failure);
+    // Every assignment is made before any is sent: a failure making them
+    // (out of memory) is sent to every process in their place, so none
+    // waits for its assignment or meshes parts no one will take.
+    std::vector<std::vector<char>> assignments;
+    try
+    {
+      for (int rank = 1; rank < ranks; ++rank)
+        assignments.push_back(
+          PackPartAssignment(AssignmentOf(rank, ranks, image, plan.Octree, plan.Starts, decimation)));
+    }
+    catch (...)
+    {
+      assignments.clear();
+      PartAssignment failed;
+      failed.Failed = true;
+      failed.Reason = Reason(std::current_exception());
+      for (int rank = 1; rank < ranks; ++rank)
+        exchange->Assign(rank, PackPartAssignment(failed));
+      exchange->Flush();
+      throw;
+    }
     for (int rank = 1; rank < ranks; ++rank)
-      exchange->Assign(rank, PackPartAssignment(AssignmentOf(rank, ranks, image, plan.Octree, plan.Starts, decimation)));
+      exchange->Assign(rank, std::move(assignments[static_cast<std::size_t>(rank - 1)]));
     exchange->Flush();
   }
   else
@@ -821,7 +845,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   // in order, with border passes between them as between blocks.
   BlockAssembly assembly(dimension);
   BorderPassRule borderPasses(streaming);
-  std::vector<std::uint8_t> settled(near.size(), 0);
+  std::vector<std::uint8_t> settled; // per image face, made in the try below
   std::size_t pending = 0; // the first part not yet taken
   std::vector<std::uint8_t> failed(static_cast<std::size_t>(ranks), 0), noticed(failed);
   // Whenever rank 0 reports progress (between the stages of its own blocks and
@@ -852,6 +876,7 @@ StreamedResult MeshAndDecimateOrJoin(const LabelImage& image, const MesherParame
   };
   try
   {
+    settled.assign(near.size(), 0);
     for (std::size_t first = 0; first < leaves.size(); ++pending)
     {
       MeshPart part;

@@ -60,15 +60,16 @@ public:
   static LabelImage Slab(const LabelImage& whole, int first, int end)
   {
     const int axis = whole.SlabAxis();
-    first = std::max(0, first);
-    end = std::min(end, whole.Dimensions[static_cast<std::size_t>(axis)]);
+    const int slices = whole.Dimensions[static_cast<std::size_t>(axis)];
+    first = std::clamp(first, 0, slices);
+    end = std::clamp(end, first, slices);
     if (first < whole.First || end > whole.SlabEnd())
       throw std::invalid_argument("a slab of an image must lie in the slices it holds");
     LabelImage slab;
     slab.Dimensions = whole.Dimensions;
     slab.Width = whole.Width;
     slab.First = first;
-    slab.End = std::max(first, end);
+    slab.End = end;
     const std::size_t slice = axis == 2 ? std::size_t(whole.Dimensions[0]) * whole.Dimensions[1] : whole.Dimensions[0];
     slab.Offset = slice * static_cast<std::size_t>(first);
     slab.Voxels = slice * static_cast<std::size_t>(slab.End - first);

@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <set>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -48,6 +51,9 @@ TEST(ImageBoundarySlab, IsTheWholeImagesBoundaryInItsInterior)
     const LabelImage image = testing::StackedAlongLastAxis(random.Image, 4);
     const int axis = image.SlabAxis(), slices = image.Dimensions[static_cast<std::size_t>(axis)];
     const ImageBoundary whole(image);
+    std::set<std::pair<std::int32_t, std::int32_t>> pairs;
+    for (const ImageBoundary::Face& f : whole.Faces())
+      pairs.insert({ f.Low, f.High });
     std::mt19937_64 draw(seed);
     for (int trial = 0; trial < 4; ++trial)
     {
@@ -84,22 +90,46 @@ TEST(ImageBoundarySlab, IsTheWholeImagesBoundaryInItsInterior)
           lo[static_cast<std::size_t>(a)] = x - h;
           hi[static_cast<std::size_t>(a)] = y + h;
         }
-        for (const ImageBoundary::Face& f : { whole.Faces().front(), whole.Faces().back() })
+        for (const auto& [labelLow, labelHigh] : pairs)
         {
           std::vector<ConvexPiece> fromWhole, fromSlab;
-          whole.Pieces(lo, hi, f.Low, f.High, fromWhole);
-          part.Pieces(lo, hi, f.Low, f.High, fromSlab);
+          whole.Pieces(lo, hi, labelLow, labelHigh, fromWhole);
+          part.Pieces(lo, hi, labelLow, labelHigh, fromSlab);
           EXPECT_TRUE(SamePieces(fromWhole, fromSlab)) << "slab " << first << " " << end << " query " << query;
         }
       }
-      // A query reaching beyond the slab is refused, not answered in part.
-      if (first > 0)
+      // Near either edge of the slab, a query is answered as on the whole
+      // image or refused, never answered in part; far enough inside, answered.
+      for (int side = 0; side < 2; ++side)
       {
-        Point3 lo{ 0, 0, 0 }, hi{ 1, 1, 1 };
-        lo[static_cast<std::size_t>(axis)] = first - 1.0;
-        hi[static_cast<std::size_t>(axis)] = first + 1.0;
-        std::vector<ConvexPiece> out;
-        EXPECT_THROW(part.Pieces(lo, hi, 0, 1, out), std::logic_error) << "slab " << first << " " << end;
+        if ((side == 0 && first == 0) || (side == 1 && end == slices))
+          continue;
+        for (double step = -3.0; step <= 16.0; step += 0.25)
+        {
+          const double at = side == 0 ? first + step : end - 1 - step;
+          Point3 lo{ -1, -1, 0 }, hi{ double(image.Dimensions[0]), double(image.Dimensions[1]), 0 };
+          lo[static_cast<std::size_t>(axis)] = at;
+          hi[static_cast<std::size_t>(axis)] = at + 0.25;
+          for (const auto& [labelLow, labelHigh] : pairs)
+          {
+            std::vector<ConvexPiece> fromWhole, fromSlab;
+            whole.Pieces(lo, hi, labelLow, labelHigh, fromWhole);
+            bool refused = false;
+            try
+            {
+              part.Pieces(lo, hi, labelLow, labelHigh, fromSlab);
+            }
+            catch (const std::logic_error&)
+            {
+              refused = true;
+            }
+            if (!refused)
+              EXPECT_TRUE(SamePieces(fromWhole, fromSlab)) << "slab " << first << " " << end << " at " << at;
+            const double inside = std::min(first == 0 ? 1e9 : at - first, end == slices ? 1e9 : end - 1 - (at + 0.25));
+            EXPECT_FALSE(refused && inside >= ImageBoundary::SlabMargin(0.0)) << "slab " << first << " " << end << " at " << at;
+            EXPECT_FALSE(!refused && step < 0) << "a query beyond the slab was answered: " << at;
+          }
+        }
       }
     }
   }

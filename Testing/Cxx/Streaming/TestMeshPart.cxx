@@ -91,5 +91,56 @@ TEST(MeshPart, BrokenMessagesAreRefused)
   EXPECT_THROW(UnpackPartMessage(PackPartMessage(sent)), std::runtime_error);
 }
 
+TEST(MeshPart, AnAssignmentComesBackAsSentAndBrokenOnesAreRefused)
+{
+  PartAssignment sent;
+  sent.ImageDimensions = { 40, 30, 90 };
+  sent.Depth = 7;
+  for (int i = 0; i < 5; ++i)
+  {
+    OctreeLeaf leaf;
+    leaf.Box.Origin = { 8 * i, 0, 16 };
+    leaf.Box.Size = 8;
+    leaf.First = 1;
+    leaf.Second = i % 2 == 0 ? 1 : 3;
+    leaf.EdgeMidpoints = static_cast<std::uint16_t>(i);
+    sent.Leaves.push_back(leaf);
+  }
+  sent.Starts = { 0, 2, 5 };
+  sent.EndKey = 123456;
+  sent.LeavesBefore = 40;
+  sent.OctreeLeaves = 100;
+  sent.SlabFirst = 4;
+  sent.SlabEnd = 38;
+  const std::vector<char> bytes = PackPartAssignment(sent);
+  const PartAssignment got = UnpackPartAssignment(bytes);
+  EXPECT_FALSE(got.Failed);
+  EXPECT_EQ(got.ImageDimensions, sent.ImageDimensions);
+  EXPECT_EQ(got.Depth, 7);
+  ASSERT_EQ(got.Leaves.size(), 5u);
+  EXPECT_EQ(got.Leaves[3].Box.Origin, sent.Leaves[3].Box.Origin);
+  EXPECT_EQ(got.Leaves[3].Second, 3);
+  EXPECT_EQ(got.Leaves[4].EdgeMidpoints, 4);
+  EXPECT_EQ(got.Starts, sent.Starts);
+  EXPECT_EQ(got.EndKey, 123456u);
+  EXPECT_EQ(got.LeavesBefore, 40u);
+  EXPECT_EQ(got.OctreeLeaves, 100u);
+  EXPECT_EQ(got.SlabFirst, 4);
+  EXPECT_EQ(got.SlabEnd, 38);
+  for (std::size_t cut : { std::size_t(0), std::size_t(5), bytes.size() / 2, bytes.size() - 1 })
+    EXPECT_THROW(UnpackPartAssignment(std::vector<char>(bytes.begin(), bytes.begin() + cut)), std::runtime_error)
+      << "cut at " << cut;
+  EXPECT_THROW(UnpackPartMessage(bytes), std::runtime_error); // not a part
+  sent.Starts = { 0, 4, 3, 5 };                                // not a run of parts
+  EXPECT_THROW(UnpackPartAssignment(PackPartAssignment(sent)), std::runtime_error);
+
+  PartAssignment failed;
+  failed.Failed = true;
+  failed.Reason = "out of memory";
+  const PartAssignment back = UnpackPartAssignment(PackPartAssignment(failed));
+  EXPECT_TRUE(back.Failed);
+  EXPECT_EQ(back.Reason, "out of memory");
+}
+
 } // namespace
 } // namespace labelmesher

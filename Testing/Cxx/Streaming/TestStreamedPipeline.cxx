@@ -19,6 +19,7 @@
 #include "LabelOctreeMesher.h"
 #include "RandomLabelImages.h"
 #include "Streaming/BlockPlan.h"
+#include "Streaming/MeshPart.h"
 #include "QueuedPartExchange.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/ParallelChunks.h"
@@ -215,11 +216,6 @@ StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesh
       EXPECT_ANY_THROW(MeshAndDecimate(none, mesher, decimation, streaming, stop, &exchange, slabOf));
       continue;
     }
-    if (std::any_of(run.Failures.begin(), run.Failures.end(), [](const auto& f) { return !f.second.empty(); }))
-    {
-      EXPECT_THROW(MeshAndDecimate(none, mesher, decimation, streaming, {}, &exchange, slabOf), std::runtime_error);
-      continue;
-    }
     const StreamedResult other = MeshAndDecimate(none, mesher, decimation, streaming, {}, &exchange, slabOf);
     EXPECT_FALSE(other.HoldsMesh);
     EXPECT_TRUE(other.Decimated.Mesh.Points.empty());
@@ -391,6 +387,27 @@ TEST(StreamedPipeline, AFailureWhilePlanningStopsEveryProcess)
   EXPECT_TRUE(run.Assignments.empty() && run.Reassigned.empty());
   for (const auto& [rank, queue] : run.Queues)
     EXPECT_TRUE(queue.empty()) << "process " << rank << " sent a part";
+
+  // Rank 0 failing after that, while making the assignments, sends its reason
+  // in their place: a process stops on it without meshing or sending anything.
+  testing::QueuedRun after;
+  PartAssignment failed;
+  failed.Failed = true;
+  failed.Reason = "out of memory";
+  after.Assignments[1] = PackPartAssignment(failed);
+  testing::QueuedPartExchange one(1, 2, after);
+  try
+  {
+    MeshAndDecimate(LabelImage(), mesher, {}, streaming, {}, &one, [](int, int) -> LabelImage {
+      throw std::logic_error("a process read its slab after rank 0 had failed");
+    });
+    ADD_FAILURE() << "a process went on after rank 0's failed assignment";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "out of memory");
+  }
+  EXPECT_TRUE(after.Queues[1].empty() && after.Notices[1].empty());
 }
 
 TEST(StreamedPipeline, BorderPassesKeepTheAssembledBlocksSmall)

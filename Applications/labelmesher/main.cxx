@@ -17,7 +17,6 @@
 #include "StringUtilities.h"
 #include "VTKMessages.h"
 
-#include "ImageFingerprint.h"
 #include "MPIPartExchange.h"
 #include "MPIStartup.h"
 #include "MemoryBudget.h"
@@ -37,7 +36,6 @@
 #include <cstdint>
 #include <iostream>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -155,20 +153,6 @@ PreparedRun Prepare(const Arguments& args, bool writes)
   return run;
 }
 
-/// What decides the mesh, for checking that every process of a distributed run was given the
-/// same: the image (extent, spacing, origin, a hash of its voxels) and the meshing settings.
-std::string MeshingFingerprint(vtkImageData* image, const MeshingSettings& s)
-{
-  std::ostringstream out;
-  out.precision(17);
-  out << labelmesher::ImageFingerprint(image, image != nullptr ? image->GetPointData()->GetScalars() : nullptr);
-  out << s.ImageToMeshDistance << ' ' << s.MeshToImageDistance << ' ' << s.Decimate << ' ' << s.BlockCells << ' '
-      << s.PartBlocks << ' ' << s.MinimumAngle << ' ' << s.RelocateInteriorVertices << ' ' << s.IncludeBackground
-      << ' ' << s.Curve << ' ' << s.Smoothness << ' ' << s.Tension << ' ' << s.MaximumUntanglingSteps << ' '
-      << s.MaximumShorteningRounds << ' ' << s.QualityIterations << ' ' << s.MinimumScaledJacobian << ' ' << s.Order;
-  return out.str();
-}
-
 int Run(const Arguments& args)
 {
   // Under `mpirun -np N` (N > 1) every process reads the image and meshes its share of the
@@ -209,14 +193,8 @@ int Run(const Arguments& args)
   }
   if (distributed)
   {
-    // Every process must mesh the same (rank 0 joins their parts), and none may mesh while
-    // another has given up (rank 0 would wait for its parts).
-    const std::string differs =
-      labelmesher::DifferenceFromRankZero(MeshingFingerprint(prepared.Input.Image, args.Settings));
-    if (failure.empty())
-    {
-      failure = differs;
-    }
+    // None may mesh while another has given up (rank 0 would wait for its parts). That every
+    // process was given the same image and meshing parameters, Label Mesher checks first.
     failure = labelmesher::FirstFailure(failure);
     if (!failure.empty())
     {

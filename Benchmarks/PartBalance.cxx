@@ -7,8 +7,10 @@
 // one thread, their messages queued as they would travel (the core's
 // PartExchange): so each rank's time is its own work, not a share of an
 // oversubscribed core. Rank 0 also joins the parts and runs the last pass,
-// after the others' parts arrive. Per R it prints every rank's seconds and
-// bytes sent, the balance of the ranks that mesh parts (largest over mean),
+// after the others' parts arrive; it first plans the parts and sends each
+// other rank its assignment, which that rank waits for (counted in its
+// seconds). Per R it prints every rank's seconds, the bytes rank 0 assigned
+// and the bytes sent to it, the balance of the ranks that mesh parts (largest over mean),
 // and a projection of the run's wall time on R cores: rank 0's joining
 // after the slowest rank's meshing (it meshes its own parts meanwhile).
 //
@@ -44,6 +46,15 @@ std::size_t BytesSent(const testing::QueuedRun& run)
   std::size_t bytes = 0;
   for (const auto& [rank, sent] : run.BytesSent)
     bytes += sent;
+  return bytes;
+}
+
+/// What rank 0 sent the others before they meshed: their assignments (leaves of their parts).
+std::size_t BytesAssigned(const testing::QueuedRun& run)
+{
+  std::size_t bytes = 0;
+  for (const auto& [rank, assignment] : run.Assignments)
+    bytes += assignment.size();
   return bytes;
 }
 
@@ -123,8 +134,8 @@ int main(int argc, char* argv[])
   const double oneSeconds = Seconds(start);
   std::printf("%s: %zu blocks in %zu parts of %zu, %zu cells; one process, one thread: %.2f s\n", name.c_str(),
     one.Streaming.Blocks, one.Streaming.Parts, streaming.PartBlocks, one.Decimated.Mesh.NumberOfCells(), oneSeconds);
-  std::printf("%6s %9s %9s %9s %8s %12s %10s %9s %s\n", "ranks", "max s", "mean s", "rank0 s", "balance",
-    "bytes to 0", "joining s", "proj. s", "same mesh");
+  std::printf("%6s %9s %9s %9s %8s %12s %12s %10s %9s %s\n", "ranks", "max s", "mean s", "rank0 s", "balance",
+    "bytes from 0", "bytes to 0", "joining s", "proj. s", "same mesh");
   for (int ranks : rankCounts)
   {
     testing::QueuedRun run;
@@ -156,8 +167,8 @@ int main(int argc, char* argv[])
         const double slowest = ranks > 1 ? *std::max_element(seconds.begin() + 1, seconds.end()) : 0.0;
         const double mean = std::accumulate(seconds.begin() + 1, seconds.end(), meshing0) / ranks;
         const double largest = std::max(meshing0, slowest);
-        std::printf("%6d %9.2f %9.2f %9.2f %8.2f %12zu %10.2f %9.2f %s\n", ranks, largest, mean, seconds[0],
-          largest / mean, BytesSent(run), joining, largest + joining,
+        std::printf("%6d %9.2f %9.2f %9.2f %8.2f %12zu %12zu %10.2f %9.2f %s\n", ranks, largest, mean, seconds[0],
+          largest / mean, BytesAssigned(run), BytesSent(run), joining, largest + joining,
           same ? "yes" : "NO");
       }
     }

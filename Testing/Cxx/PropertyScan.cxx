@@ -7,7 +7,7 @@
 // thousands before trusting a change to the mesher's per-leaf tests or the
 // decimator's checks. Prints every failing seed; exit status 1 if any.
 //
-//   labelmesher_property_scan [--decimate|--streamed CELLS|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
+//   labelmesher_property_scan [--decimate|--streamed CELLS [--processes N]|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]
 //
 // --streamed CELLS: mesher and decimator block by block (StreamedPipeline.h),
 // blocks of CELLS initial cells (a few dozen: every image crosses many
@@ -15,6 +15,13 @@
 // LABELMESHER_SCAN_UNSOUND_BORDERS=1 in the environment the blocks do not
 // freeze near image faces they cannot certify (unsound, to find images that
 // show it).
+// --processes N (after --streamed CELLS): each image stacked along its last
+// axis (StackedAlongLastAxis) to at least 160 slices in 2D, 72 in 3D, and
+// meshed on N processes run one after another (MeshOnQueuedRanks: every one
+// but rank 0 from its slab of the image only) and on one; the two meshes must
+// be the same, and nothing may go wrong between the processes. (The one-process
+// mesh's guarantees are --streamed's.) Prints how many processes' slabs were
+// shorter than the image.
 //
 // --decimate: mesher then decimator, with the angle drawn per seed
 // (DrawDecimationParameters); the decimated mesh must keep every guarantee.
@@ -40,11 +47,13 @@
 #include "DecimatorGuarantees.h"
 #include "MesherGuarantees.h"
 #include "QuadraticGuarantees.h"
+#include "QueuedPartExchange.h"
 #include "RandomLabelImages.h"
 #include "ThinFeatureImages.h"
 
 #include "Streaming/StreamedPipeline.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -68,12 +77,24 @@ int main(int argc, char** argv)
   }
   quadraticCurver.MinimumScaledJacobian = testing::kQuadraticScaledJacobian;
   StreamingParameters streaming;
+  int processes = 0;
   if (streamed)
   {
     streaming.BlockCells = std::strtoull(argv[2], nullptr, 10);
     streaming.FreezeNearBorders = std::getenv("LABELMESHER_SCAN_UNSOUND_BORDERS") == nullptr;
     ++argv;
     --argc;
+    if (argc > 3 && std::string(argv[2]) == "--processes")
+    {
+      processes = std::atoi(argv[3]);
+      if (processes < 2)
+      {
+        std::fprintf(stderr, "bad arguments: --processes needs 2 or more\n");
+        return 2;
+      }
+      argv += 2;
+      argc -= 2;
+    }
   }
   if (decimate)
   {
@@ -83,7 +104,7 @@ int main(int argc, char** argv)
   if (argc < 5)
   {
     std::fprintf(
-      stderr, "usage: %s [--decimate|--streamed CELLS|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
+      stderr, "usage: %s [--decimate|--streamed CELLS [--processes N]|--curve|--order2] smooth|boxes|thin 2|3 FIRST_SEED COUNT [SIZE]\n", argv[0]);
     return 2;
   }
   const std::string family = argv[1];
@@ -106,7 +127,7 @@ int main(int argc, char** argv)
   const bool curveOrder2 = quadratic && dimension == 2;
   const bool quadratic3D = quadratic && dimension == 3;
   std::uint64_t misclassifiedLinear = 0, misclassifiedCurved = 0;
-  std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0;
+  std::uint64_t failures = 0, cellsBefore = 0, cellsAfter = 0, slabs = 0, shortSlabs = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed)
   {
     const testing::RandomLabelImage random = family == "smooth"
@@ -119,6 +140,41 @@ int main(int argc, char** argv)
     testing::CurverRun run;
     testing::QuadraticRun quadraticRun;
     const Smoothness smoothness = testing::DrawSmoothness(seed);
+    if (processes > 0)
+    {
+      const int height = random.Image.Dimensions[static_cast<std::size_t>(random.Image.SlabAxis())];
+      const LabelImage tall =
+        testing::StackedAlongLastAxis(random.Image, std::max(2, ((dimension == 2 ? 160 : 72) + height - 1) / height));
+      std::vector<std::string> problems;
+      std::vector<std::array<int, 2>> taken;
+      try
+      {
+        const StreamedResult one = MeshAndDecimate(tall, parameters, decimation, streaming);
+        const StreamedResult shared =
+          testing::MeshOnQueuedRanks(tall, parameters, decimation, streaming, processes, problems, &taken);
+        const SimplexMesh& a = one.Decimated.Mesh;
+        const SimplexMesh& b = shared.Decimated.Mesh;
+        if (a.Points != b.Points || a.Connectivity != b.Connectivity || a.Materials != b.Materials)
+          problems.push_back("the mesh on " + std::to_string(processes) + " processes differs from one process's");
+      }
+      catch (const std::exception& e)
+      {
+        problems.push_back(std::string("failed: ") + e.what());
+      }
+      const int slices = tall.Dimensions[static_cast<std::size_t>(tall.SlabAxis())];
+      slabs += taken.size();
+      shortSlabs += static_cast<std::uint64_t>(
+        std::count_if(taken.begin(), taken.end(), [&](const auto& t) { return t[1] - t[0] < slices; }));
+      if (problems.empty())
+        continue;
+      ++failures;
+      std::printf("seed %llu FAILS on %d processes (blocks of %zu cells)\n", static_cast<unsigned long long>(seed),
+        processes, streaming.BlockCells);
+      for (const auto& problem : problems)
+        std::printf("  %s\n", problem.c_str());
+      std::fflush(stdout);
+      continue;
+    }
     const auto problems = curve || curveOrder2
       ? testing::ViolatedCurverGuarantees(random.Image, parameters, decimation, smoothness, &run,
           testing::kCurvedScaledJacobian, -1.0, curveOrder2 ? 2 : 3)
@@ -146,6 +202,16 @@ int main(int argc, char** argv)
       std::printf("  %s\n", problem.c_str());
     std::printf("%s", random.Describe().c_str());
     std::fflush(stdout);
+  }
+  if (processes > 0)
+  {
+    std::printf("streamed on %d processes %s %dD seeds %llu..%llu: %llu of %llu images differ from one process; "
+                "%llu of %llu slabs shorter than the image\n",
+      processes, family.c_str(), dimension, static_cast<unsigned long long>(first),
+      static_cast<unsigned long long>(first + count - 1), static_cast<unsigned long long>(failures),
+      static_cast<unsigned long long>(count), static_cast<unsigned long long>(shortSlabs),
+      static_cast<unsigned long long>(slabs));
+    return failures == 0 ? 0 : 1;
   }
   std::printf("%s%s %dD seeds %llu..%llu: %llu of %llu images violate a guarantee\n",
     curve ? "curved " : quadratic ? "quadratic " : streamed ? "streamed " : decimate ? "decimated " : "",

@@ -187,54 +187,25 @@ TEST(StreamedPipeline, SameMeshOnAnyNumberOfThreads)
   SetThreadLimit(0);
 }
 
-/// The pipeline on `ranks` processes; rank `failing` (if any) is stopped by
-/// its progress observer at its first report of stage `stopAt`. Every rank
-/// but 0 takes only its slab of the image (recorded in `slabs`, if given).
+/// The pipeline on `ranks` processes (testing::MeshOnQueuedRanks), with
+/// whatever went wrong between them reported as a test failure.
 StreamedResult MeshOnRanks(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks, int failing = -1,
   const std::string& stopAt = "", const ProgressObserver& rootObserver = {},
   std::vector<std::array<int, 2>>* slabs = nullptr)
 {
-  testing::QueuedRun run;
-  run.AssignFirst = [&] {
-    testing::AssignBeforehand(run, ranks, [&](testing::QueuedPartExchange& zero) {
-      MeshAndDecimate(image, mesher, decimation, streaming, {}, &zero);
-    });
-  };
-  const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
-  const SlabSource slabOf = [&](int first, int end) {
-    if (slabs != nullptr)
-      slabs->push_back({ first, end });
-    return LabelImage::Slab(image, first, end);
-  };
-  const LabelImage none; // ranks other than 0 read only their slab
-  for (int rank = ranks - 1; rank > 0; --rank)
+  std::vector<std::string> problems;
+  struct Reported
   {
-    testing::QueuedPartExchange exchange(rank, ranks, run);
-    if (rank == failing)
+    const std::vector<std::string>& Problems;
+    ~Reported()
     {
-      EXPECT_ANY_THROW(MeshAndDecimate(none, mesher, decimation, streaming, stop, &exchange, slabOf));
-      continue;
+      for (const std::string& problem : Problems)
+        ADD_FAILURE() << problem;
     }
-    const StreamedResult other = MeshAndDecimate(none, mesher, decimation, streaming, {}, &exchange, slabOf);
-    EXPECT_FALSE(other.HoldsMesh);
-    EXPECT_TRUE(other.Decimated.Mesh.Points.empty());
-  }
-  testing::QueuedPartExchange root(0, ranks, run);
-  struct TakesEverything
-  {
-    testing::QueuedRun& Run;
-    ~TakesEverything()
-    {
-      for (const auto& [rank, queue] : Run.Queues)
-        EXPECT_TRUE(queue.empty()) << "rank 0 left a message of rank " << rank;
-      for (const auto& [rank, notices] : Run.Notices)
-        EXPECT_TRUE(notices.empty()) << "rank 0 left a failure notice of rank " << rank;
-      EXPECT_TRUE(Run.Reassigned.empty() || Run.Reassigned == Run.Assignments)
-        << "rank 0 assigned other parts than those the processes meshed";
-    }
-  } check{ run };
-  return MeshAndDecimate(image, mesher, decimation, streaming, rootObserver, &root);
+  } reported{ problems };
+  return testing::MeshOnQueuedRanks(
+    image, mesher, decimation, streaming, ranks, problems, slabs, failing, stopAt, rootObserver);
 }
 
 TEST(StreamedPipeline, SameMeshOnAnyNumberOfProcesses)

@@ -11,11 +11,14 @@
  * assignments before it runs: the first to ask runs QueuedRun::AssignFirst,
  * which runs rank 0 on a run of its own until it has assigned every process
  * (AssignBeforehand); rank 0's assignments of the real run are kept in
- * Reassigned, to be compared. For the tests and the part balance benchmark.
+ * Reassigned, to be compared. MeshOnQueuedRanks runs a whole such run. For the
+ * tests, the property scan and the part balance benchmark.
  */
 
 #include "Streaming/PartExchange.h"
+#include "Streaming/StreamedPipeline.h"
 
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -141,6 +144,79 @@ void AssignBeforehand(QueuedRun& run, int ranks, RankZero&& rankZero)
   {
   }
   run.Assignments = std::move(first.Assignments);
+}
+
+/// The streamed pipeline on `ranks` processes run one after another (rank 0
+/// last), every one but rank 0 from its slab of `image` only (the slabs taken
+/// go to `slabs`, if given). Rank `failing` (if any, not 0) is stopped by its
+/// progress observer at its first report of stage `stopAt`; rank 0 reports to
+/// `rootObserver`. Returns rank 0's result and throws what rank 0 throws; in
+/// either case `problems` gets what went wrong between the processes: a rank
+/// that did not fail as asked or returned a mesh, a message or notice rank 0
+/// left, an assignment rank 0 made that differs from the one used.
+inline StreamedResult MeshOnQueuedRanks(const LabelImage& image, const MesherParameters& mesher,
+  const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks,
+  std::vector<std::string>& problems, std::vector<std::array<int, 2>>* slabs = nullptr, int failing = -1,
+  const std::string& stopAt = "", const ProgressObserver& rootObserver = {})
+{
+  QueuedRun run;
+  run.AssignFirst = [&] {
+    AssignBeforehand(run, ranks, [&](QueuedPartExchange& zero) {
+      MeshAndDecimate(image, mesher, decimation, streaming, {}, &zero);
+    });
+  };
+  const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
+  const SlabSource slabOf = [&](int first, int end) {
+    if (slabs != nullptr)
+      slabs->push_back({ first, end });
+    return LabelImage::Slab(image, first, end);
+  };
+  const LabelImage none; // the processes other than rank 0 read only their slab
+  for (int rank = ranks - 1; rank > 0; --rank)
+  {
+    QueuedPartExchange exchange(rank, ranks, run);
+    try
+    {
+      const StreamedResult other =
+        MeshAndDecimate(none, mesher, decimation, streaming, rank == failing ? stop : ProgressObserver{}, &exchange, slabOf);
+      if (rank == failing)
+        problems.push_back("process " + std::to_string(rank) + " did not stop at " + stopAt);
+      if (other.HoldsMesh || !other.Decimated.Mesh.Points.empty())
+        problems.push_back("process " + std::to_string(rank) + " returned a mesh");
+    }
+    catch (const std::exception& e)
+    {
+      if (rank != failing)
+        problems.push_back("process " + std::to_string(rank) + " failed: " + e.what());
+    }
+    catch (...)
+    {
+      if (rank != failing)
+        problems.push_back("process " + std::to_string(rank) + " failed");
+    }
+  }
+  QueuedPartExchange root(0, ranks, run);
+  const auto check = [&] {
+    for (const auto& [rank, queue] : run.Queues)
+      if (!queue.empty())
+        problems.push_back("rank 0 left a message of process " + std::to_string(rank));
+    for (const auto& [rank, notices] : run.Notices)
+      if (!notices.empty())
+        problems.push_back("rank 0 left a failure notice of process " + std::to_string(rank));
+    if (!run.Reassigned.empty() && run.Reassigned != run.Assignments)
+      problems.push_back("rank 0 assigned other parts than those the processes meshed");
+  };
+  try
+  {
+    StreamedResult result = MeshAndDecimate(image, mesher, decimation, streaming, rootObserver, &root);
+    check();
+    return result;
+  }
+  catch (...)
+  {
+    check();
+    throw;
+  }
 }
 
 } // namespace testing

@@ -65,6 +65,7 @@ public:
     return std::string(c.begin(), c.end());
   }
   bool AtEnd() const { return At == Bytes.size(); }
+  std::size_t Left() const { return Bytes.size() - At; }
 
 private:
   void Take(void* to, std::size_t n)
@@ -171,6 +172,51 @@ PartMessage UnpackPartMessage(const std::vector<char>& bytes)
   return message;
 }
 
+namespace
+{
+
+/// Leaves field by field: the struct's padding is not sent (its bytes are
+/// whatever the memory held, so the same assignment would differ in bytes).
+constexpr std::size_t kLeafBytes = 7 * sizeof(std::int32_t) + sizeof(std::uint16_t) + sizeof(std::uint8_t);
+
+void WriteLeaves(Writer& w, const std::vector<OctreeLeaf>& leaves)
+{
+  w.Value(static_cast<std::uint64_t>(leaves.size()));
+  for (const OctreeLeaf& leaf : leaves)
+  {
+    for (int c : leaf.Box.Origin)
+      w.Value(static_cast<std::int32_t>(c));
+    w.Value(static_cast<std::int32_t>(leaf.Box.Size));
+    w.Value(static_cast<std::int32_t>(leaf.Box.Dimension));
+    w.Value(leaf.First);
+    w.Value(leaf.Second);
+    w.Value(leaf.EdgeMidpoints);
+    w.Value(leaf.SplitFaces);
+  }
+}
+
+std::vector<OctreeLeaf> ReadLeaves(Reader& r)
+{
+  const auto n = r.Value<std::uint64_t>();
+  if (n > r.Left() / kLeafBytes)
+    throw std::runtime_error("a process's assignment is cut short");
+  std::vector<OctreeLeaf> leaves(static_cast<std::size_t>(n));
+  for (OctreeLeaf& leaf : leaves)
+  {
+    for (int& c : leaf.Box.Origin)
+      c = r.Value<std::int32_t>();
+    leaf.Box.Size = r.Value<std::int32_t>();
+    leaf.Box.Dimension = r.Value<std::int32_t>();
+    leaf.First = r.Value<std::int32_t>();
+    leaf.Second = r.Value<std::int32_t>();
+    leaf.EdgeMidpoints = r.Value<std::uint16_t>();
+    leaf.SplitFaces = r.Value<std::uint8_t>();
+  }
+  return leaves;
+}
+
+} // namespace
+
 std::vector<char> PackPartAssignment(const PartAssignment& a)
 {
   Writer w;
@@ -184,7 +230,7 @@ std::vector<char> PackPartAssignment(const PartAssignment& a)
   for (int n : a.ImageDimensions)
     w.Value(static_cast<std::int32_t>(n));
   w.Value(a.Depth);
-  w.Array(a.Leaves);
+  WriteLeaves(w, a.Leaves);
   w.Array(a.Starts);
   w.Value(a.EndKey);
   w.Value(a.LeavesBefore);
@@ -211,7 +257,7 @@ PartAssignment UnpackPartAssignment(const std::vector<char>& bytes)
   for (int& n : a.ImageDimensions)
     n = r.Value<std::int32_t>();
   a.Depth = r.Value<std::int32_t>();
-  a.Leaves = r.Array<OctreeLeaf>();
+  a.Leaves = ReadLeaves(r);
   a.Starts = r.Array<std::uint64_t>();
   a.EndKey = r.Value<std::uint64_t>();
   a.LeavesBefore = r.Value<std::uint64_t>();

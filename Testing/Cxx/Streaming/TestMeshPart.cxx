@@ -113,6 +113,12 @@ TEST(MeshPart, AnAssignmentComesBackAsSentAndBrokenOnesAreRefused)
   sent.SlabFirst = 4;
   sent.SlabEnd = 38;
   const std::vector<char> bytes = PackPartAssignment(sent);
+  // Leaf by leaf, field by field: 31 bytes each, none of the struct's padding
+  // (whatever the memory held there; the same assignment must give the same bytes).
+  PartAssignment empty = sent;
+  empty.Leaves.clear();
+  empty.Starts = { 0 };
+  EXPECT_EQ(bytes.size() - PackPartAssignment(empty).size(), 5 * 31u + 2 * sizeof(std::uint64_t));
   const PartAssignment got = UnpackPartAssignment(bytes);
   EXPECT_FALSE(got.Failed);
   EXPECT_EQ(got.ImageDimensions, sent.ImageDimensions);

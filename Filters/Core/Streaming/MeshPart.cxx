@@ -237,6 +237,7 @@ std::vector<char> PackPartAssignment(const PartAssignment& a)
   w.Value(a.OctreeLeaves);
   w.Value(a.SlabFirst);
   w.Value(a.SlabEnd);
+  w.Value(a.SlabHash);
   return std::move(w.Bytes);
 }
 
@@ -264,6 +265,7 @@ PartAssignment UnpackPartAssignment(const std::vector<char>& bytes)
   a.OctreeLeaves = r.Value<std::uint64_t>();
   a.SlabFirst = r.Value<std::int32_t>();
   a.SlabEnd = r.Value<std::int32_t>();
+  a.SlabHash = r.Value<std::uint64_t>();
   if (!r.AtEnd())
     throw std::runtime_error("a process's assignment runs on past its end");
   if (a.Starts.empty() || a.Starts.front() != 0 || a.Starts.back() != a.Leaves.size() ||

@@ -62,6 +62,9 @@ struct PartAssignment
   std::uint64_t EndKey = 0; ///< the Morton key just past the last leaf (the next part's, or the octree's end)
   std::uint64_t LeavesBefore = 0, OctreeLeaves = 0; ///< leaves before the run, and in the octree (for progress)
   std::int32_t SlabFirst = 0, SlabEnd = 0;          ///< the slices of the image it needs (LabelImage::Slab)
+  /// LabelImage::SliceHash of those slices in rank 0's image: a process that read its slab itself
+  /// checks that it holds the same labels.
+  std::uint64_t SlabHash = 0;
 };
 
 std::vector<char> PackPartAssignment(const PartAssignment& assignment);

@@ -636,18 +636,26 @@ PartAssignment AssignmentOf(int rank, int ranks, const LabelImage& image, const 
   a.LeavesBefore = starts[from];
   a.EndKey = LeafRunKeys(leaves, starts[from], starts[to], image.Dimension(), octree.Depth).End;
   const int axis = image.SlabAxis();
+  const int margin =
+    ImageBoundary::SlabMargin(std::max(decimation.ImageToMeshDistance, decimation.MeshToImageDistance));
   int low = image.Dimensions[static_cast<std::size_t>(axis)], high = 0;
   for (const OctreeLeaf& leaf : a.Leaves)
   {
+    // The octree's cube reaches beyond a box-shaped image: a leaf farther than the margin from
+    // the image reads none of its voxels (they are background there), so it needs no slice.
+    bool reads = true;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(image.Dimension()); ++d)
+      reads = reads && leaf.Box.Origin[d] - margin < image.Dimensions[d] && leaf.Box.Origin[d] + leaf.Box.Size + margin > 0;
+    if (!reads)
+      continue;
     low = std::min(low, leaf.Box.Origin[static_cast<std::size_t>(axis)]);
     high = std::max(high, leaf.Box.Origin[static_cast<std::size_t>(axis)] + leaf.Box.Size);
   }
-  const int margin =
-    ImageBoundary::SlabMargin(std::max(decimation.ImageToMeshDistance, decimation.MeshToImageDistance));
   // A run beyond the image's end (the octree's cube is larger) still reads the last slices.
   const int slices = image.Dimensions[static_cast<std::size_t>(axis)];
   a.SlabFirst = std::clamp(low - margin, 0, std::max(0, slices - margin));
   a.SlabEnd = std::clamp(high + margin, a.SlabFirst, slices);
+  a.SlabHash = image.SliceHash(a.SlabFirst, a.SlabEnd);
   return a;
 }
 
@@ -669,6 +677,11 @@ void SendParts(const LabelImage& image, const SlabSource& slabs, const Decimatio
   if (slab.Dimensions != assigned.ImageDimensions || slab.SlabFirst() > assigned.SlabFirst ||
     slab.SlabEnd() < assigned.SlabEnd)
     throw std::logic_error("the slab of the image given is not the one this process's parts need");
+  // A process that read its slab itself may have been given another file than rank 0.
+  if (slab.SliceHash(assigned.SlabFirst, assigned.SlabEnd) != assigned.SlabHash)
+    throw std::runtime_error("it was given another image than process 0 (their labels differ in slices " +
+      std::to_string(assigned.SlabFirst) + " to " + std::to_string(assigned.SlabEnd - 1) +
+      " along the last axis): every process must mesh the same");
   const int dimension = slab.Dimension(), depth = assigned.Depth;
   ValidateDecimationParameters(dimension, decimation);
   const ImageBoundary boundary(slab);
@@ -1024,11 +1037,18 @@ StreamedResult MeshAndDecimate(const LabelImage& image, const MesherParameters& 
   {
     throw; // every rank knows
   }
-  catch (...)
+  catch (const AbortRequested&)
   {
-    // Whatever stopped this process (bad input, no memory, a stop), rank 0 must hear of it.
     SendFailure(*exchange, std::current_exception());
     throw;
+  }
+  catch (...)
+  {
+    // Whatever stopped this process (bad input, no memory), rank 0 must hear of it; and this
+    // process says it in rank 0's words, naming itself (pvbatch prints every process's error).
+    const std::exception_ptr error = std::current_exception();
+    SendFailure(*exchange, error);
+    throw std::runtime_error(ProcessFailure(exchange->Rank(), exchange->Ranks(), Reason(error)));
   }
 }
 

@@ -59,24 +59,59 @@ public:
   /// clamped to the image).
   static LabelImage Slab(const LabelImage& whole, int first, int end)
   {
-    const int axis = whole.SlabAxis();
-    const int slices = whole.Dimensions[static_cast<std::size_t>(axis)];
+    const int slices = whole.Dimensions[static_cast<std::size_t>(whole.SlabAxis())];
     first = std::clamp(first, 0, slices);
     end = std::clamp(end, first, slices);
     if (first < whole.First || end > whole.SlabEnd())
       throw std::invalid_argument("a slab of an image must lie in the slices it holds");
-    LabelImage slab;
-    slab.Dimensions = whole.Dimensions;
-    slab.Width = whole.Width;
-    slab.First = first;
-    slab.End = end;
-    const std::size_t slice = axis == 2 ? std::size_t(whole.Dimensions[0]) * whole.Dimensions[1] : whole.Dimensions[0];
-    slab.Offset = slice * static_cast<std::size_t>(first);
-    slab.Voxels = slice * static_cast<std::size_t>(slab.End - first);
-    slab.Allocate();
+    LabelImage slab = EmptySlab(whole.Dimensions, first, end, whole.Width);
     for (std::size_t v = 0; v < slab.Voxels; ++v)
       slab.SetLabel(v, whole.Label(slab.Offset + v - whole.Offset));
     return slab;
+  }
+
+  /// The slices [first, end) along the last axis of an image of `dimensions`,
+  /// every voxel background, to be filled through SetLabel in storage order
+  /// (x fastest, from slice `first`): a slab read from a file piece by piece.
+  static LabelImage EmptySlab(const std::array<int, 3>& dimensions, int first, int end, int bytesPerLabel = 1)
+  {
+    LabelImage slab(0, 0, 0, bytesPerLabel);
+    slab.Dimensions = dimensions;
+    const int slices = dimensions[static_cast<std::size_t>(slab.SlabAxis())];
+    if (first < 0 || end < first || end > slices)
+      throw std::invalid_argument("a slab must lie in its image's slices");
+    slab.First = first;
+    slab.End = end;
+    const std::size_t slice = slab.SliceVoxels();
+    slab.Offset = slice * static_cast<std::size_t>(first);
+    slab.Voxels = slice * static_cast<std::size_t>(end - first);
+    slab.Allocate();
+    return slab;
+  }
+
+  /// Voxels in one slice across SlabAxis.
+  std::size_t SliceVoxels() const
+  {
+    return SlabAxis() == 2 ? std::size_t(Dimensions[0]) * Dimensions[1] : std::size_t(Dimensions[0]);
+  }
+
+  /// A hash (FNV-1a over the labels as 32-bit values, whatever their storage) of
+  /// the slices [first, end), which must be held: the same for a slab and for
+  /// the whole image it was taken from.
+  std::uint64_t SliceHash(int first, int end) const
+  {
+    if (first < First || end > SlabEnd() || end < first)
+      throw std::invalid_argument("a hash of slices this image does not hold was asked for");
+    std::uint64_t hash = 1469598103934665603ull;
+    const std::size_t from = SliceVoxels() * static_cast<std::size_t>(first) - Offset;
+    const std::size_t to = SliceVoxels() * static_cast<std::size_t>(end) - Offset;
+    for (std::size_t v = from; v < to; ++v)
+    {
+      const auto label = static_cast<std::uint32_t>(Label(v));
+      for (int b = 0; b < 4; ++b)
+        hash = (hash ^ ((label >> (8 * b)) & 0xffu)) * 1099511628211ull;
+    }
+    return hash;
   }
 
   /// The axis a slab is cut along: the last one (z in 3D, y in 2D).

@@ -112,6 +112,7 @@ TEST(MeshPart, AnAssignmentComesBackAsSentAndBrokenOnesAreRefused)
   sent.OctreeLeaves = 100;
   sent.SlabFirst = 4;
   sent.SlabEnd = 38;
+  sent.SlabHash = 0x0123456789abcdefull;
   const std::vector<char> bytes = PackPartAssignment(sent);
   // Leaf by leaf, field by field: 31 bytes each, none of the struct's padding
   // (whatever the memory held there; the same assignment must give the same bytes).
@@ -133,6 +134,7 @@ TEST(MeshPart, AnAssignmentComesBackAsSentAndBrokenOnesAreRefused)
   EXPECT_EQ(got.OctreeLeaves, 100u);
   EXPECT_EQ(got.SlabFirst, 4);
   EXPECT_EQ(got.SlabEnd, 38);
+  EXPECT_EQ(got.SlabHash, 0x0123456789abcdefull);
   for (std::size_t cut : { std::size_t(0), std::size_t(5), bytes.size() / 2, bytes.size() - 1 })
     EXPECT_THROW(UnpackPartAssignment(std::vector<char>(bytes.begin(), bytes.begin() + cut)), std::runtime_error)
       << "cut at " << cut;

@@ -274,6 +274,37 @@ TEST(StreamedPipeline, AProcessReadsOnlyTheSlabItsPartsNeed)
   }
 }
 
+TEST(StreamedPipeline, AProcessGivenAnotherImageIsNamedWhenItTakesItsSlab)
+{
+  // A process that reads its slab itself compares its labels with rank 0's (the assignment's
+  // hash of those slices): one voxel differing in every slice, whichever slab it takes, stops
+  // the run with rank 0 naming it.
+  const auto random = testing::GenerateRandomLabelImageWithDescription(912104, 3);
+  const LabelImage image = testing::StackedAlongLastAxis(random.Image, 3);
+  LabelImage other = image;
+  for (int k = 0; k < image.Dimensions[2]; ++k)
+    other(0, 0, k) = other(0, 0, k) == 1 ? 2 : 1;
+  const MesherParameters mesher = testing::DrawDistanceBounds(912104);
+  const DecimationParameters decimation = testing::DrawDecimationParameters(912104, 3, mesher);
+  StreamingParameters streaming;
+  streaming.BlockCells = 600;
+  streaming.PartBlocks = 1;
+  std::vector<std::string> problems;
+  try
+  {
+    testing::MeshOnQueuedRanks(image, mesher, decimation, streaming, 3, problems, nullptr, 2, "", {}, &other);
+    ADD_FAILURE() << "a process given another image was not refused";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("process 2 of 3: it was given another image than process 0"),
+      std::string::npos)
+      << e.what();
+  }
+  for (const std::string& problem : problems)
+    ADD_FAILURE() << problem;
+}
+
 TEST(StreamedPipeline, OnePartIsTheBlocksOfOneProcess)
 {
   // PartBlocks 0: every block in one part, the pipeline as before parts

@@ -153,11 +153,14 @@ void AssignBeforehand(QueuedRun& run, int ranks, RankZero&& rankZero)
 /// `rootObserver`. Returns rank 0's result and throws what rank 0 throws; in
 /// either case `problems` gets what went wrong between the processes: a rank
 /// that did not fail as asked or returned a mesh, a message or notice rank 0
-/// left, an assignment rank 0 made that differs from the one used.
+/// left, an assignment rank 0 made that differs from the one used. With a
+/// `failingImage`, rank `failing` takes its slab from that image instead (a
+/// process given another file) and is expected to fail for it.
 inline StreamedResult MeshOnQueuedRanks(const LabelImage& image, const MesherParameters& mesher,
   const DecimationParameters& decimation, const StreamingParameters& streaming, int ranks,
   std::vector<std::string>& problems, std::vector<std::array<int, 2>>* slabs = nullptr, int failing = -1,
-  const std::string& stopAt = "", const ProgressObserver& rootObserver = {})
+  const std::string& stopAt = "", const ProgressObserver& rootObserver = {},
+  const LabelImage* failingImage = nullptr)
 {
   QueuedRun run;
   run.AssignFirst = [&] {
@@ -166,14 +169,15 @@ inline StreamedResult MeshOnQueuedRanks(const LabelImage& image, const MesherPar
     });
   };
   const ProgressObserver stop{ [&](const std::string& stage, double) { return stage != stopAt; } };
-  const SlabSource slabOf = [&](int first, int end) {
-    if (slabs != nullptr)
-      slabs->push_back({ first, end });
-    return LabelImage::Slab(image, first, end);
-  };
   const LabelImage none; // the processes other than rank 0 read only their slab
   for (int rank = ranks - 1; rank > 0; --rank)
   {
+    const LabelImage& source = rank == failing && failingImage ? *failingImage : image;
+    const SlabSource slabOf = [&](int first, int end) {
+      if (slabs != nullptr)
+        slabs->push_back({ first, end });
+      return LabelImage::Slab(source, first, end);
+    };
     QueuedPartExchange exchange(rank, ranks, run);
     try
     {

@@ -148,6 +148,26 @@ TEST(LabelImage, ASlabHoldsItsSlicesOnlyAndRefusesTheOthers)
       whole.At(2, dimension == 3 ? 1 : 4, dimension == 3 ? 4 : 0));
     EXPECT_THROW(LabelImage::Slab(slab, 2, 5), std::invalid_argument);
     EXPECT_FALSE(whole.IsSlab());
+
+    // The hash of slices is the labels', however they are stored: a slab's equals the whole
+    // image's, an empty slab filled in order equals the slab; one label changed changes it.
+    EXPECT_EQ(slab.SliceHash(3, 6), whole.SliceHash(3, 6));
+    EXPECT_EQ(slab.SliceHash(4, 5), whole.SliceHash(4, 5));
+    EXPECT_NE(whole.SliceHash(3, 6), whole.SliceHash(3, 5));
+    EXPECT_THROW(slab.SliceHash(2, 6), std::invalid_argument);
+    LabelImage filled = LabelImage::EmptySlab(whole.Dimensions, 3, 6);
+    for (std::size_t v = 0; v < filled.NumberOfVoxels(); ++v)
+      filled.SetLabel(v, slab.Label(v));
+    EXPECT_EQ(filled, slab);
+    EXPECT_EQ(filled.SliceHash(3, 6), whole.SliceHash(3, 6));
+    LabelImage narrow(5, ny, nz);
+    for (std::size_t v = 0; v < narrow.NumberOfVoxels(); ++v)
+      narrow.SetLabel(v, whole.Label(v) % 200); // one byte a label
+    LabelImage changed = narrow;
+    changed.SetLabel(changed.NumberOfVoxels() - 1, 255);
+    EXPECT_EQ(LabelImage::Slab(narrow, 0, 9).SliceHash(0, 9), narrow.SliceHash(0, 9));
+    EXPECT_NE(changed.SliceHash(0, 9), narrow.SliceHash(0, 9));
+    EXPECT_THROW(LabelImage::EmptySlab(whole.Dimensions, 5, 10), std::invalid_argument);
   }
 }
 

@@ -34,11 +34,13 @@ namespace detail
 {
 
 /// "(i, j, k)" of the flat point index `flat` in an image of `dims`.
-inline std::string VoxelText(std::size_t flat, const int dims[3])
+inline std::string VoxelText(std::size_t flat, const int dims[3], const int start[3] = nullptr)
 {
   const std::size_t nx = dims[0], ny = dims[1];
+  const int zero[3] = { 0, 0, 0 };
+  const int* at = start ? start : zero;
   std::ostringstream s;
-  s << "(" << flat % nx << ", " << (flat / nx) % ny << ", " << flat / (nx * ny) << ")";
+  s << "(" << at[0] + flat % nx << ", " << at[1] + (flat / nx) % ny << ", " << at[2] + flat / (nx * ny) << ")";
   return s.str();
 }
 

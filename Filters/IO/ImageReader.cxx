@@ -4,6 +4,7 @@
 #include "ImageReader.h"
 
 #include "ImageChecks.h"
+#include "NrrdSlices.h"
 #include "NiftiCheck.h"
 #include "PngCheck.h"
 #include "SegmentationReader.h"
@@ -16,6 +17,7 @@
 #include "itkImageFileReader.h"
 #include "itkImageIOBase.h"
 #include "itkImageIOFactory.h"
+#include "itkImageRegionConstIterator.h"
 #include "itkMultiThreaderBase.h"
 
 #include "vtkAOSDataArrayTemplate.h"
@@ -37,6 +39,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace labelmesher
 {
@@ -71,39 +74,122 @@ private:
   std::streambuf* Saved;
 };
 
+/// What ReadWithITK reads of the image: its geometry alone, all its voxels, or those of an extent.
+struct ReadRequest
+{
+  enum class Kind
+  {
+    Information,
+    Whole,
+    Extent
+  };
+  Kind What = Kind::Whole;
+  int Extent[6] = { 0, -1, 0, -1, 0, -1 }; ///< Kind::Extent: within the image's, in VTK's order
+};
+
+/// The region requested of `image`: the whole of it, or the extent's (ITK may have buffered
+/// more, and says so in its own requested region).
+template <typename TImage>
+typename TImage::RegionType RequestedRegion(TImage* image, const ReadRequest& request)
+{
+  if (request.What != ReadRequest::Kind::Extent)
+  {
+    return image->GetLargestPossibleRegion();
+  }
+  typename TImage::RegionType region;
+  for (unsigned int a = 0; a < 3; ++a)
+  {
+    region.SetIndex(a, request.Extent[2 * a]);
+    region.SetSize(a, static_cast<itk::SizeValueType>(request.Extent[2 * a + 1] - request.Extent[2 * a] + 1));
+  }
+  return region;
+}
+
 template <typename TPixel>
-typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::ImageIOBase* io)
+typename itk::Image<TPixel, 3>::Pointer ReadITK(const std::string& path, itk::ImageIOBase* io, const ReadRequest& request)
 {
   using ImageType = itk::Image<TPixel, 3>;
   auto reader = itk::ImageFileReader<ImageType>::New();
   reader->SetFileName(path);
   reader->SetImageIO(io);
-  reader->Update();
+  if (request.What == ReadRequest::Kind::Information)
+  {
+    reader->UpdateOutputInformation();
+  }
+  else
+  {
+    if (request.What == ReadRequest::Kind::Extent)
+    {
+      // ITK reads just this region where the format lets it (raw MetaImage, NIfTI); NrrdIO
+      // reads the whole file, and the copy below keeps only the region.
+      reader->UpdateOutputInformation();
+      const typename ImageType::RegionType region = RequestedRegion(reader->GetOutput(), request);
+      if (!reader->GetOutput()->GetLargestPossibleRegion().IsInside(region))
+      {
+        throw InputError("cannot read an extent of '" + path + "' beyond the image");
+      }
+      reader->GetOutput()->SetRequestedRegion(region);
+    }
+    reader->Update();
+  }
   typename ImageType::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();
   return image;
 }
 
+/// The requested voxels of `image` into `out`, in VTK's order (x fastest). The whole image is
+/// its buffer; an extent is copied out of what ITK buffered (all of it, for NrrdIO).
+template <typename TPixel, typename TOut>
+void CopyRequestedVoxels(itk::Image<TPixel, 3>* image, const ReadRequest& request, TOut* out)
+{
+  using ImageType = itk::Image<TPixel, 3>;
+  if (request.What != ReadRequest::Kind::Extent)
+  {
+    std::copy(image->GetBufferPointer(), image->GetBufferPointer() + image->GetLargestPossibleRegion().GetNumberOfPixels(), out);
+    return;
+  }
+  for (itk::ImageRegionConstIterator<ImageType> it(image, RequestedRegion(image, request)); !it.IsAtEnd(); ++it)
+  {
+    *out++ = it.Get();
+  }
+}
+
+/// The image's geometry, and for an extent its extent.
+template <typename TImage>
+vtkSmartPointer<vtkImageData> PlacedGeometry(TImage* image, const std::string& path, const ReadRequest& request)
+{
+  auto output = GeometryFromITK(image, path);
+  if (request.What == ReadRequest::Kind::Extent)
+  {
+    output->SetExtent(const_cast<int*>(request.Extent));
+  }
+  return output;
+}
+
 /// Integer pixels: copied as they are (the filter accepts every integer type).
 template <typename TPixel>
-vtkSmartPointer<vtkImageData> IntegerFromITK(const std::string& path, itk::ImageIOBase* io)
+vtkSmartPointer<vtkImageData> IntegerFromITK(const std::string& path, itk::ImageIOBase* io, const ReadRequest& request)
 {
-  auto image = ReadITK<TPixel>(path, io);
-  auto output = GeometryFromITK(image.GetPointer(), path);
+  auto image = ReadITK<TPixel>(path, io, request);
+  auto output = PlacedGeometry(image.GetPointer(), path, request);
   vtkNew<vtkAOSDataArrayTemplate<TPixel>> labels;
   labels->SetName("Labels");
-  const std::size_t n = image->GetLargestPossibleRegion().GetNumberOfPixels();
-  labels->SetNumberOfValues(static_cast<vtkIdType>(n));
-  std::copy(image->GetBufferPointer(), image->GetBufferPointer() + n, labels->GetPointer(0));
+  if (request.What != ReadRequest::Kind::Information)
+  {
+    labels->SetNumberOfValues(static_cast<vtkIdType>(RequestedRegion(image.GetPointer(), request).GetNumberOfPixels()));
+    CopyRequestedVoxels(image.GetPointer(), request, labels->GetPointer(0));
+  }
   output->GetPointData()->SetScalars(labels);
   return output;
 }
 
 /// Floating-point labels: accepted only if every value is an integer that fits 32 bits (label
-/// maps are often stored as float); converted to int.
+/// maps are often stored as float); converted to int. `extent`: where the values lie.
 template <typename TReal>
-vtkSmartPointer<vtkIntArray> IntegerLabels(const TReal* values, std::size_t n, const int dims[3], const std::string& path)
+vtkSmartPointer<vtkIntArray> IntegerLabels(const TReal* values, std::size_t n, const int extent[6], const std::string& path)
 {
+  const int dims[3] = { extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1 };
+  const int start[3] = { extent[0], extent[2], extent[4] };
   auto labels = vtkSmartPointer<vtkIntArray>::New();
   labels->SetName("Labels");
   labels->SetNumberOfValues(static_cast<vtkIdType>(n));
@@ -129,7 +215,7 @@ vtkSmartPointer<vtkIntArray> IntegerLabels(const TReal* values, std::size_t n, c
     }
     if (!problem.empty())
     {
-      throw InputError("'" + path + "' is not a label image: voxel " + VoxelText(i, dims) +
+      throw InputError("'" + path + "' is not a label image: voxel " + VoxelText(i, dims, start) +
         " holds " + problem);
     }
     labels->SetValue(static_cast<vtkIdType>(i), static_cast<int>(v));
@@ -138,14 +224,58 @@ vtkSmartPointer<vtkIntArray> IntegerLabels(const TReal* values, std::size_t n, c
 }
 
 template <typename TPixel>
-vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOBase* io)
+vtkSmartPointer<vtkImageData> RealFromITK(const std::string& path, itk::ImageIOBase* io, const ReadRequest& request)
 {
-  auto image = ReadITK<TPixel>(path, io);
-  auto output = GeometryFromITK(image.GetPointer(), path);
-  int dims[3];
-  output->GetDimensions(dims);
-  output->GetPointData()->SetScalars(IntegerLabels(image->GetBufferPointer(),
-    image->GetLargestPossibleRegion().GetNumberOfPixels(), dims, path));
+  auto image = ReadITK<TPixel>(path, io, request);
+  auto output = PlacedGeometry(image.GetPointer(), path, request);
+  if (request.What == ReadRequest::Kind::Information)
+  {
+    vtkNew<vtkIntArray> labels;
+    labels->SetName("Labels");
+    output->GetPointData()->SetScalars(labels);
+    return output;
+  }
+  std::vector<TPixel> voxels(RequestedRegion(image.GetPointer(), request).GetNumberOfPixels());
+  CopyRequestedVoxels(image.GetPointer(), request, voxels.data());
+  image = nullptr; // the whole file's voxels, where ITK read them all
+  output->GetPointData()->SetScalars(IntegerLabels(voxels.data(), voxels.size(), output->GetExtent(), path));
+  return output;
+}
+
+/// An extent of a raw or gzip NRRD read slice by slice (NrrdSlices.h), ITK giving the geometry:
+/// integer pixels as they are, real ones checked and converted as RealFromITK does.
+template <typename TPixel>
+vtkSmartPointer<vtkImageData> NrrdBoxBySlices(
+  const std::string& path, itk::ImageIOBase* io, const detail::TextHeader& header, const ReadRequest& request)
+{
+  if (io->GetComponentSize() != sizeof(TPixel))
+  {
+    throw InputError("'" + path + "' has voxels of " + std::to_string(io->GetComponentSize()) + " bytes for its type");
+  }
+  ReadRequest information;
+  information.What = ReadRequest::Kind::Information;
+  auto image = ReadITK<TPixel>(path, io, information);
+  auto output = PlacedGeometry(image.GetPointer(), path, request);
+  const auto size = image->GetLargestPossibleRegion().GetSize();
+  const int dims[3] = { static_cast<int>(size[0]), static_cast<int>(size[1]), static_cast<int>(size[2]) };
+  const bool bigEndian = io->GetByteOrder() == itk::IOByteOrderEnum::BigEndian;
+  const auto voxels = static_cast<std::size_t>(output->GetNumberOfPoints());
+  if constexpr (std::is_integral_v<TPixel>)
+  {
+    vtkNew<vtkAOSDataArrayTemplate<TPixel>> labels;
+    labels->SetName("Labels");
+    labels->SetNumberOfValues(static_cast<vtkIdType>(voxels));
+    detail::ReadNrrdBox(path, header, dims, sizeof(TPixel), bigEndian, request.Extent,
+      reinterpret_cast<char*>(labels->GetPointer(0)));
+    output->GetPointData()->SetScalars(labels);
+  }
+  else
+  {
+    std::vector<TPixel> values(voxels);
+    detail::ReadNrrdBox(
+      path, header, dims, sizeof(TPixel), bigEndian, request.Extent, reinterpret_cast<char*>(values.data()));
+    output->GetPointData()->SetScalars(IntegerLabels(values.data(), voxels, output->GetExtent(), path));
+  }
   return output;
 }
 
@@ -161,7 +291,32 @@ void AvoidITKThreadPool()
   (void)once;
 }
 
-vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
+/// NrrdBoxBySlices for the file's pixel type.
+vtkSmartPointer<vtkImageData> NrrdExtentBySlices(
+  const std::string& path, itk::ImageIOBase* io, const detail::TextHeader& header, const ReadRequest& request)
+{
+  using C = itk::IOComponentEnum;
+  switch (io->GetComponentType())
+  {
+    case C::UCHAR: return NrrdBoxBySlices<unsigned char>(path, io, header, request);
+    case C::CHAR: return NrrdBoxBySlices<signed char>(path, io, header, request);
+    case C::USHORT: return NrrdBoxBySlices<unsigned short>(path, io, header, request);
+    case C::SHORT: return NrrdBoxBySlices<short>(path, io, header, request);
+    case C::UINT: return NrrdBoxBySlices<unsigned int>(path, io, header, request);
+    case C::INT: return NrrdBoxBySlices<int>(path, io, header, request);
+    case C::ULONG: return NrrdBoxBySlices<unsigned long>(path, io, header, request);
+    case C::LONG: return NrrdBoxBySlices<long>(path, io, header, request);
+    case C::ULONGLONG: return NrrdBoxBySlices<unsigned long long>(path, io, header, request);
+    case C::LONGLONG: return NrrdBoxBySlices<long long>(path, io, header, request);
+    case C::FLOAT: return NrrdBoxBySlices<float>(path, io, header, request);
+    case C::DOUBLE: return NrrdBoxBySlices<double>(path, io, header, request);
+    default:
+      throw InputError("'" + path + "' has an unsupported pixel type " +
+        itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()));
+  }
+}
+
+vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path, const ReadRequest& request)
 {
   AvoidITKThreadPool();
   const detail::TextHeader header = detail::ReadTextHeader(path); // before NrrdIO or MetaIO parses it
@@ -208,21 +363,25 @@ vtkSmartPointer<vtkImageData> ReadWithITK(const std::string& path)
   CheckNotTruncated(path, io, header);
   detail::CheckCompressedVoxels(path, io, header);
 
+  if (request.What == ReadRequest::Kind::Extent && detail::ReadsNrrdBySlices(header))
+  {
+    return NrrdExtentBySlices(path, io, header, request);
+  }
   using C = itk::IOComponentEnum;
   switch (io->GetComponentType())
   {
-    case C::UCHAR: return IntegerFromITK<unsigned char>(path, io);
-    case C::CHAR: return IntegerFromITK<signed char>(path, io);
-    case C::USHORT: return IntegerFromITK<unsigned short>(path, io);
-    case C::SHORT: return IntegerFromITK<short>(path, io);
-    case C::UINT: return IntegerFromITK<unsigned int>(path, io);
-    case C::INT: return IntegerFromITK<int>(path, io);
-    case C::ULONG: return IntegerFromITK<unsigned long>(path, io);
-    case C::LONG: return IntegerFromITK<long>(path, io);
-    case C::ULONGLONG: return IntegerFromITK<unsigned long long>(path, io);
-    case C::LONGLONG: return IntegerFromITK<long long>(path, io);
-    case C::FLOAT: return RealFromITK<float>(path, io);
-    case C::DOUBLE: return RealFromITK<double>(path, io);
+    case C::UCHAR: return IntegerFromITK<unsigned char>(path, io, request);
+    case C::CHAR: return IntegerFromITK<signed char>(path, io, request);
+    case C::USHORT: return IntegerFromITK<unsigned short>(path, io, request);
+    case C::SHORT: return IntegerFromITK<short>(path, io, request);
+    case C::UINT: return IntegerFromITK<unsigned int>(path, io, request);
+    case C::INT: return IntegerFromITK<int>(path, io, request);
+    case C::ULONG: return IntegerFromITK<unsigned long>(path, io, request);
+    case C::LONG: return IntegerFromITK<long>(path, io, request);
+    case C::ULONGLONG: return IntegerFromITK<unsigned long long>(path, io, request);
+    case C::LONGLONG: return IntegerFromITK<long long>(path, io, request);
+    case C::FLOAT: return RealFromITK<float>(path, io, request);
+    case C::DOUBLE: return RealFromITK<double>(path, io, request);
     default:
       throw InputError("'" + path + "' has an unsupported pixel type " +
         itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()));
@@ -290,17 +449,15 @@ void CheckVTILabels(vtkImageData* image, const std::string& path)
     throw InputError("'" + path + "' holds " + std::to_string(labels->GetNumberOfTuples()) + " labels for " +
       std::to_string(image->GetNumberOfPoints()) + " voxels");
   }
-  int dims[3];
-  image->GetDimensions(dims);
   const std::size_t n = static_cast<std::size_t>(labels->GetNumberOfTuples());
   vtkSmartPointer<vtkDataArray> checked = labels;
   if (auto* floats = vtkFloatArray::SafeDownCast(labels))
   {
-    checked = IntegerLabels(floats->GetPointer(0), n, dims, path);
+    checked = IntegerLabels(floats->GetPointer(0), n, image->GetExtent(), path);
   }
   else if (auto* doubles = vtkDoubleArray::SafeDownCast(labels))
   {
-    checked = IntegerLabels(doubles->GetPointer(0), n, dims, path);
+    checked = IntegerLabels(doubles->GetPointer(0), n, image->GetExtent(), path);
   }
   else if (!IsIntegerType(labels->GetDataType()))
   {
@@ -340,7 +497,52 @@ vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path)
       image->GetPointData()->GetScalars()->SetName("Labels");
       return image;
     }
-    return ReadWithITK(path);
+    return ReadWithITK(path, ReadRequest{});
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    throw detail::ITKReadError(path, e);
+  }
+}
+
+bool ReadsByExtent(const std::string& path)
+{
+  const std::string lower = Lower(path);
+  return !IsSegmentationFile(path) && !EndsWith(lower, ".vti") && !EndsWith(lower, ".png");
+}
+
+vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path)
+{
+  if (!ReadsByExtent(path))
+  {
+    throw std::invalid_argument("'" + path + "' is read whole, not by extent");
+  }
+  detail::CheckInputFile(path);
+  try
+  {
+    ReadRequest request;
+    request.What = ReadRequest::Kind::Information;
+    return ReadWithITK(path, request);
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    throw detail::ITKReadError(path, e);
+  }
+}
+
+vtkSmartPointer<vtkImageData> ReadLabelImageExtent(const std::string& path, const int extent[6])
+{
+  if (!ReadsByExtent(path))
+  {
+    throw std::invalid_argument("'" + path + "' is read whole, not by extent");
+  }
+  detail::CheckInputFile(path);
+  try
+  {
+    ReadRequest request;
+    request.What = ReadRequest::Kind::Extent;
+    std::copy(extent, extent + 6, request.Extent);
+    return ReadWithITK(path, request);
   }
   catch (const itk::ExceptionObject& e)
   {

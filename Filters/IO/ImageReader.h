@@ -40,6 +40,21 @@ struct InputError : std::runtime_error
 /// Throws InputError. The scalars are named "Labels".
 vtkSmartPointer<vtkImageData> ReadLabelImage(const std::string& path);
 
+/// True when `path` is read by extent (ReadLabelImageInformation, then ReadLabelImageExtent):
+/// NRRD, NIfTI and MetaImage, not a 3D Slicer segmentation, a VTI or a PNG.
+bool ReadsByExtent(const std::string& path);
+
+/// What ReadLabelImage reads but the voxels: the image's extent, spacing, origin and direction,
+/// and an empty label array of the type it would hold, every check of the header made (those of
+/// the values come with them). Throws InputError (std::invalid_argument unless ReadsByExtent).
+vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path);
+
+/// The voxels of `extent` (VTK's order, within the image's extent) alone, as ReadLabelImage
+/// gives them and with its checks. Raw MetaImage and NIfTI are read only there; NrrdIO reads the
+/// whole file first (ITK cannot stream NRRD), and the voxels beyond the extent are released
+/// before this returns. Throws InputError.
+vtkSmartPointer<vtkImageData> ReadLabelImageExtent(const std::string& path, const int extent[6]);
+
 /// A label image with what its file says about the labels.
 struct LabeledImage
 {

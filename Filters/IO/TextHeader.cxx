@@ -103,7 +103,14 @@ void ReadNrrdFields(std::istream& in, const std::string& path, TextHeader& heade
     const std::string lower = Lower(line);
     if (lower.rfind("encoding:", 0) == 0)
     {
+      const std::string encoding = Trim(lower.substr(lower.find(':') + 1));
       header.RawData = lower.find("raw") != std::string::npos;
+      header.Gzip = encoding == "gzip" || encoding == "gz";
+    }
+    else if (lower.rfind("byte skip:", 0) == 0 || lower.rfind("byteskip:", 0) == 0 ||
+      lower.rfind("line skip:", 0) == 0 || lower.rfind("lineskip:", 0) == 0)
+    {
+      header.Skips = true;
     }
     else if (lower.rfind("data file:", 0) == 0 || lower.rfind("datafile:", 0) == 0)
     {

@@ -34,6 +34,8 @@ struct TextHeader
   Format Kind = Format::Other;
   bool RawData = false;    ///< the voxels are stored as uncompressed binary
   bool Compressed = false; ///< MetaImage: zlib-compressed voxels (CompressedData = True)
+  bool Gzip = false;       ///< NRRD: gzip-compressed voxels (encoding gzip or gz)
+  bool Skips = false;      ///< NRRD: a byte skip or line skip before the voxels
   std::uintmax_t CompressedBytes = 0; ///< MetaImage: CompressedDataSize, 0 when not given
   bool Detached = false; ///< the voxels are in another file than the header
   /// That file, relative to the header's folder resolved; empty when the voxels are attached or

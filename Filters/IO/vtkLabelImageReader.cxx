@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The CLI's checked label-image readers (ImageReader.h, SegmentationReader.h, ColorTableReader.h)
-// as a VTK source: the image is read once in RequestInformation, where its extent, spacing and
-// origin are needed, and held until a setting changes.
+// as a VTK source. NRRD, NIfTI and MetaImage: RequestInformation reads the header alone;
+// RequestData reads the extent asked for, and holds the image once the whole of it was asked
+// for. The other formats: read whole in RequestInformation and held. Held images stay until a
+// setting changes.
 #include "vtkLabelImageReader.h"
 
 #include "ColorTableReader.h"
@@ -18,6 +20,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <exception>
 #include <new>
 
@@ -71,7 +74,16 @@ bool vtkLabelImageReader::ReadIfChanged()
     {
       throw labelmesher::io::InputError("no file name given");
     }
-    labelmesher::io::LabeledImage read = labelmesher::io::ReadLabeledImage(this->FileName);
+    labelmesher::io::LabeledImage read;
+    this->HoldsVoxels = !labelmesher::io::ReadsByExtent(this->FileName);
+    if (this->HoldsVoxels)
+    {
+      read = labelmesher::io::ReadLabeledImage(this->FileName);
+    }
+    else
+    {
+      read.Image = labelmesher::io::ReadLabelImageInformation(this->FileName);
+    }
     labelmesher::MaterialTable table = read.Materials;
     if (this->LabelTableFileName && *this->LabelTableFileName)
     {
@@ -137,12 +149,62 @@ int vtkLabelImageReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     output->Initialize();
     return 1;
   }
-  output->ShallowCopy(this->Image);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6];
+  this->Image->GetExtent(extent);
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
   {
-    output->Crop(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT())); // no-op for the whole extent
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
   }
+  const bool empty = extent[0] > extent[1] || extent[2] > extent[3] || extent[4] > extent[5];
+  const int* whole = this->Image->GetExtent();
+  const bool wholeExtent = std::equal(extent, extent + 6, whole);
+  if (!this->HoldsVoxels && !empty)
+  {
+    // Read what was asked for: the whole image is then held (ParaView, rank 0 of a distributed
+    // run), an extent is not (a process that reads its slab once).
+    this->ErrorText.clear();
+    try
+    {
+      vtkSmartPointer<vtkImageData> read = wholeExtent
+        ? labelmesher::io::ReadLabelImage(this->FileName)
+        : labelmesher::io::ReadLabelImageExtent(this->FileName, extent);
+      read->GetFieldData()->ShallowCopy(this->Image->GetFieldData());
+      if (!wholeExtent)
+      {
+        output->ShallowCopy(read);
+        return 1;
+      }
+      this->Image = read;
+      this->HoldsVoxels = true;
+    }
+    catch (const std::bad_alloc&)
+    {
+      this->ErrorText = std::string("not enough memory to read '") + this->FileName + "'";
+    }
+    catch (const std::exception& e)
+    {
+      this->ErrorText = e.what();
+    }
+    if (!this->ErrorText.empty())
+    {
+      if (wholeExtent)
+      {
+        this->Image = nullptr; // failed with these settings: neither read nor said again
+      }
+      vtkErrorMacro(<< this->ErrorText);
+      output->Initialize();
+      return 1;
+    }
+  }
+  if (empty && !this->HoldsVoxels)
+  {
+    output->Initialize();
+    output->GetFieldData()->ShallowCopy(this->Image->GetFieldData());
+    return 1;
+  }
+  output->ShallowCopy(this->Image);
+  output->Crop(extent); // no-op for the whole extent
   return 1;
 }
 

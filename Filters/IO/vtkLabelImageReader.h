@@ -24,6 +24,14 @@
  *
  * Output: vtkImageData whose point scalars are named `Labels`.
  *
+ * Streaming: NRRD, NIfTI and MetaImage files give any extent asked for (VTK's
+ * UPDATE_EXTENT) and read only its voxels where ITK can (raw MetaImage and
+ * NIfTI; NRRD is read whole, and the rest released at once). The whole image,
+ * once asked for, is held until a setting changes; an extent is not held.
+ * Segmentations, VTI and PNG files are read whole in RequestInformation.
+ * The header's errors come with UpdateInformation, those of the values with
+ * the read of the voxels (Update).
+ *
  * @warning On an error the output is empty and the error (ErrorEvent, and
  * GetErrorText()) is one line.
  *
@@ -94,7 +102,10 @@ private:
 
   char* FileName = nullptr;
   char* LabelTableFileName = nullptr;
-  vtkSmartPointer<vtkImageData> Image; ///< the last image read, with its field data
+  /// The last image read, with its field data: the whole image, or its geometry alone (and an
+  /// empty label array) until the whole of it is asked for.
+  vtkSmartPointer<vtkImageData> Image;
+  bool HoldsVoxels = false; ///< Image holds the voxels
   vtkMTimeType ImageTime = 0;          ///< this->GetMTime() at the last read, whether or not it failed
   std::string ErrorText;
   std::vector<std::string> Notes;

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -107,6 +108,131 @@ TEST_F(ReaderTest, GzipNrrdVoxelForVoxelWithSpacingAndOrigin)
   }
   EXPECT_STREQ(reader->GetErrorText(), "");
   EXPECT_EQ(reader->GetNumberOfNotes(), 0);
+}
+
+/// The reader's output for `extent` alone (a process reading its slab: VTK's UPDATE_EXTENT).
+vtkImageData* ReadExtent(vtkLabelImageReader* reader, const int extent[6])
+{
+  reader->UpdateExtent(extent);
+  return reader->GetOutput();
+}
+
+TEST_F(ReaderTest, AnExtentIsTheWholeImagesVoxelsThere)
+{
+  const std::vector<unsigned char> labels = Pattern();
+  const std::string raw(labels.begin(), labels.end());
+  std::string mha = "ObjectType = Image\nNDims = 3\nDimSize = 7 5 4\nElementType = MET_UCHAR\n"
+                    "ElementSpacing = 0.5 0.25 2\nOffset = 1 2 3\nElementDataFile = LOCAL\n";
+  const std::vector<std::pair<std::string, std::string>> files{
+    { "raw.nrrd", NrrdHeader("uchar", "raw") + raw },
+    { "gzip.nrrd", NrrdHeader("uchar", "gzip") + Gzip(raw) },
+    { "raw.mha", mha + raw },
+  };
+  // Slabs along z (what a process of a distributed run asks for) and any box.
+  const int extents[][6] = { { 0, 6, 0, 4, 2, 3 }, { 0, 6, 0, 4, 0, 0 }, { 1, 5, 2, 3, 1, 2 }, { 0, 6, 0, 4, 0, 3 } };
+  for (const auto& [name, bytes] : files)
+  {
+    const std::string path = this->Path(name);
+    WriteFile(path, bytes);
+    for (const auto& extent : extents)
+    {
+      vtkNew<vtkLabelImageReader> reader;
+      MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+      reader->SetFileName(path.c_str());
+      vtkImageData* piece = ReadExtent(reader, extent);
+      ASSERT_TRUE(errors.Messages.empty()) << name << ": " << errors.Messages[0];
+      for (int e = 0; e < 6; ++e)
+        ASSERT_EQ(piece->GetExtent()[e], extent[e]) << name;
+      EXPECT_DOUBLE_EQ(piece->GetSpacing()[2], 2.0) << name;
+      EXPECT_DOUBLE_EQ(piece->GetOrigin()[1], 2.0) << name;
+      vtkDataArray* scalars = piece->GetPointData()->GetScalars();
+      ASSERT_NE(scalars, nullptr) << name;
+      EXPECT_STREQ(scalars->GetName(), "Labels");
+      ASSERT_EQ(scalars->GetNumberOfTuples(), piece->GetNumberOfPoints()) << name;
+      vtkIdType v = 0;
+      for (int k = extent[4]; k <= extent[5]; ++k)
+        for (int j = extent[2]; j <= extent[3]; ++j)
+          for (int i = extent[0]; i <= extent[1]; ++i, ++v)
+            ASSERT_EQ(scalars->GetComponent(v, 0), labels[static_cast<std::size_t>((k * 5 + j) * 7 + i)])
+              << name << " voxel " << i << ' ' << j << ' ' << k;
+    }
+  }
+}
+
+TEST_F(ReaderTest, AnExtentOfABigEndianOrDamagedNrrd)
+{
+  // Two-byte labels stored big-endian, raw and gzip: read slice by slice, swapped.
+  const std::vector<unsigned char> pattern = Pattern();
+  std::string bigEndian;
+  for (unsigned char p : pattern)
+  {
+    const unsigned value = 300u + p;
+    bigEndian += static_cast<char>(value >> 8);
+    bigEndian += static_cast<char>(value & 0xff);
+  }
+  const int slab[6] = { 0, 6, 0, 4, 1, 2 };
+  for (const std::string& encoding : { std::string("raw"), std::string("gzip") })
+  {
+    const std::string path = this->Path("big_" + encoding + ".nrrd");
+    WriteFile(path, NrrdHeader("ushort", encoding, "endian: big\n") + (encoding == "raw" ? bigEndian : Gzip(bigEndian)));
+    vtkNew<vtkLabelImageReader> reader;
+    MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+    reader->SetFileName(path.c_str());
+    vtkDataArray* scalars = ReadExtent(reader, slab)->GetPointData()->GetScalars();
+    ASSERT_TRUE(errors.Messages.empty()) << errors.Messages[0];
+    ASSERT_NE(scalars, nullptr);
+    ASSERT_EQ(scalars->GetNumberOfTuples(), 7 * 5 * 2);
+    for (vtkIdType v = 0; v < scalars->GetNumberOfTuples(); ++v)
+      ASSERT_EQ(scalars->GetComponent(v, 0), 300.0 + pattern[static_cast<std::size_t>(v + 35)]) << encoding << " voxel " << v;
+  }
+  // A gzip stream cut short, and one damaged: one line each, no voxels.
+  const std::string compressed = Gzip(std::string(pattern.begin(), pattern.end()));
+  std::string damaged = compressed;
+  damaged[damaged.size() / 2] = static_cast<char>(damaged[damaged.size() / 2] ^ 0x5a);
+  for (const auto& [name, voxels, problem] : { std::tuple<std::string, std::string, std::string>{ "short.nrrd",
+         compressed.substr(0, compressed.size() / 2), "end before the image does" },
+         { "damaged.nrrd", damaged, "" } })
+  {
+    const std::string path = this->Path(name);
+    WriteFile(path, NrrdHeader("uchar", "gzip") + voxels);
+    vtkNew<vtkLabelImageReader> reader;
+    MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+    reader->SetFileName(path.c_str());
+    const int last[6] = { 0, 6, 0, 4, 3, 3 };
+    EXPECT_EQ(ReadExtent(reader, last)->GetNumberOfPoints(), 0) << name;
+    ASSERT_EQ(errors.Messages.size(), 1u) << name;
+    const std::string text = reader->GetErrorText();
+    EXPECT_EQ(text.find('\n'), std::string::npos) << text;
+    EXPECT_NE(text.find(problem), std::string::npos) << text;
+    EXPECT_NE(text.find(name), std::string::npos) << text;
+  }
+}
+
+TEST_F(ReaderTest, TheValuesBeyondAnExtentAreNeitherKeptNorChecked)
+{
+  // Floats, with a non-integer label in slice 3: the header reads, the slices before it too; the
+  // whole image is refused, naming the voxel where it lies.
+  std::vector<float> values(7 * 5 * 4, 1.0f);
+  values[(3 * 5 + 2) * 7 + 4] = 0.5f;
+  const std::string path = this->Path("half.nrrd");
+  WriteFile(path, NrrdHeader("float", "raw", "endian: little\n") +
+      std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float)));
+  vtkNew<vtkLabelImageReader> reader;
+  MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages[0];
+  const int before[6] = { 0, 6, 0, 4, 0, 2 };
+  EXPECT_EQ(ReadExtent(reader, before)->GetNumberOfPoints(), 7 * 5 * 3);
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages[0];
+  reader->UpdateWholeExtent();
+  ASSERT_EQ(errors.Messages.size(), 1u);
+  EXPECT_NE(errors.Messages[0].find("voxel (4, 2, 3) holds the non-integer value 0.5"), std::string::npos)
+    << errors.Messages[0];
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  const int within[6] = { 0, 6, 0, 4, 3, 3 };
+  ReadExtent(reader, within);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0) << "a failed whole read is not retried with these settings";
 }
 
 TEST_F(ReaderTest, BadInputsAreOneLineAndAnEmptyOutput)

@@ -80,13 +80,15 @@ namespace
 struct GatherLabels
 {
   LabelImage& Labels; ///< the values in the input's order, as narrow as they allow
+  vtkIdType Begin = 0; ///< the first value gathered
   std::string Error;
   bool HasForeground = false;
 
   template <typename ArrayT>
   void operator()(ArrayT* array)
   {
-    const auto values = vtk::DataArrayValueRange<1>(array);
+    const auto values = vtk::DataArrayValueRange<1>(
+      array, this->Begin, this->Begin + static_cast<vtkIdType>(this->Labels.NumberOfVoxels()));
     std::size_t n = 0;
     for (const auto v : values)
     {
@@ -102,14 +104,14 @@ struct GatherLabels
   // Values of types the dispatcher does not cover (e.g. implicit arrays).
   void Fallback(vtkDataArray* array)
   {
-    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    for (std::size_t n = 0; n < this->Labels.NumberOfVoxels(); ++n)
     {
-      const double value = array->GetComponent(t, 0);
+      const double value = array->GetComponent(this->Begin + static_cast<vtkIdType>(n), 0);
       if (!this->Check(value))
       {
         return;
       }
-      Labels.SetLabel(static_cast<std::size_t>(t), static_cast<std::int32_t>(value));
+      Labels.SetLabel(n, static_cast<std::int32_t>(value));
     }
   }
 
@@ -259,6 +261,109 @@ LabelImage PlaceLabels(LabelImage&& labels, const int dims[3],
 
 } // namespace
 
+namespace
+{
+
+/// The label array's checks, shared by whole images and slabs; "" when it holds labels.
+std::string LabelArrayProblem(vtkImageData* input, vtkDataArray* scalars)
+{
+  if (!scalars)
+  {
+    return "Input image has no point scalars: expected integer labels";
+  }
+  if (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE)
+  {
+    return std::string("Input scalars '") + (scalars->GetName() ? scalars->GetName() : "") + "' are of type " +
+      scalars->GetDataTypeAsString() + ": expected integer labels";
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    return "Input scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
+      " components: expected one label per voxel";
+  }
+  if (scalars->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return "Input scalars have " + std::to_string(scalars->GetNumberOfTuples()) + " values for " +
+      std::to_string(input->GetNumberOfPoints()) + " points: expected point-associated labels";
+  }
+  return {};
+}
+
+/// Gathers `scalars` from value `begin` on into `labels` in storage order; the reason when a
+/// label is refused.
+std::string GatherInto(vtkDataArray* scalars, vtkIdType begin, LabelImage& labels, bool& hasForeground)
+{
+  GatherLabels gather{ labels, begin, {} };
+  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Integrals>::Execute(scalars, gather))
+  {
+    gather.Fallback(scalars);
+  }
+  hasForeground = gather.HasForeground;
+  return gather.Error.empty() ? std::string() : "Invalid label image: " + gather.Error;
+}
+
+} // namespace
+
+bool ConvertsAsIs(const int dims[3], const double spacing[3])
+{
+  if (dims[0] == 1 || dims[1] == 1)
+  {
+    return false; // a single slice across x or y is permuted (and a single row is not worth a slab)
+  }
+  const int meshed = dims[2] == 1 ? 2 : 3;
+  double h = std::numeric_limits<double>::max();
+  for (int a = 0; a < meshed; ++a)
+  {
+    h = std::min(h, std::abs(spacing[a]));
+  }
+  for (int a = 0; a < meshed; ++a)
+  {
+    if (std::abs(std::abs(spacing[a]) - h) > 1e-9 * h) // PlaceLabels' test for resampling
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ConvertLabelSlab(vtkImageData* piece, vtkDataArray* scalars, const int wholeExtent[6], int first, int end,
+  LabelImage& slab, std::string& error)
+{
+  const int dims[3] = { wholeExtent[1] - wholeExtent[0] + 1, wholeExtent[3] - wholeExtent[2] + 1,
+    wholeExtent[5] - wholeExtent[4] + 1 };
+  const int axis = dims[2] == 1 ? 1 : 2;
+  // The piece may hold more slices than the slab (a producer that always gives the whole image),
+  // never fewer, and only whole slices.
+  int extent[6];
+  piece->GetExtent(extent);
+  error.clear();
+  for (int a = 0; a < 3 && error.empty(); ++a)
+  {
+    const int low = a == axis ? wholeExtent[2 * a] + first : wholeExtent[2 * a];
+    const int high = a == axis ? wholeExtent[2 * a] + end - 1 : wholeExtent[2 * a + 1];
+    if (a == axis ? extent[2 * a] > low || extent[2 * a + 1] < high
+                  : extent[2 * a] != low || extent[2 * a + 1] != high)
+    {
+      error = "The image's piece spans " + std::to_string(extent[2 * a]) + " to " + std::to_string(extent[2 * a + 1]) +
+        " along axis " + std::to_string(a) + ": expected " + std::to_string(low) + " to " + std::to_string(high);
+    }
+  }
+  if (error.empty())
+  {
+    error = LabelArrayProblem(piece, scalars);
+  }
+  if (!error.empty())
+  {
+    return false;
+  }
+  slab = LabelImage::EmptySlab({ dims[0], dims[1], dims[2] }, first, end);
+  const vtkIdType skipped = static_cast<vtkIdType>(wholeExtent[2 * axis] + first - extent[2 * axis]) *
+    static_cast<vtkIdType>(slab.SliceVoxels());
+  bool hasForeground = false;
+  error = GatherInto(scalars, skipped, slab, hasForeground);
+  return error.empty();
+}
+
 bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& image,
   ImagePlacement& placement, std::string& error)
 {
@@ -274,28 +379,9 @@ bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& i
     error = "Input image has an empty extent: nothing to mesh";
     return false;
   }
-  if (!scalars)
+  error = LabelArrayProblem(input, scalars);
+  if (!error.empty())
   {
-    error = "Input image has no point scalars: expected integer labels";
-    return false;
-  }
-  if (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE)
-  {
-    error = std::string("Input scalars '") + (scalars->GetName() ? scalars->GetName() : "") +
-      "' are of type " + scalars->GetDataTypeAsString() + ": expected integer labels";
-    return false;
-  }
-  if (scalars->GetNumberOfComponents() != 1)
-  {
-    error = "Input scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
-      " components: expected one label per voxel";
-    return false;
-  }
-  if (scalars->GetNumberOfTuples() != input->GetNumberOfPoints())
-  {
-    error = "Input scalars have " + std::to_string(scalars->GetNumberOfTuples()) +
-      " values for " + std::to_string(input->GetNumberOfPoints()) +
-      " points: expected point-associated labels";
     return false;
   }
   const double* spacing = input->GetSpacing();
@@ -310,18 +396,13 @@ bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& i
   }
 
   LabelImage labels(dims[0], dims[1], dims[2]); // widened as the values ask
-  GatherLabels gather{ labels, {} };
-  if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Integrals>::Execute(
-        scalars, gather))
+  bool hasForeground = false;
+  error = GatherInto(scalars, 0, labels, hasForeground);
+  if (!error.empty())
   {
-    gather.Fallback(scalars);
-  }
-  if (!gather.Error.empty())
-  {
-    error = "Invalid label image: " + gather.Error;
     return false;
   }
-  if (!gather.HasForeground)
+  if (!hasForeground)
   {
     error = "Input image has no foreground (every label is 0): nothing to mesh";
     return false;

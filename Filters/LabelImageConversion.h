@@ -63,6 +63,20 @@ inline constexpr double kMaximumResampledVoxels = 2147483647.0;
 bool ConvertLabelImage(vtkImageData* input, vtkDataArray* scalars, LabelImage& image,
   ImagePlacement& placement, std::string& error);
 
+/// True when ConvertLabelImage keeps an image of point dimensions `dims` and `spacing` as it is:
+/// neither permuted (a single slice lies across z) nor resampled (the meshed axes' spacings are
+/// equal in size). Its LabelImage's slices along the last axis are then the image's own, so a
+/// process can read just the slab it needs (ConvertLabelSlab).
+bool ConvertsAsIs(const int dims[3], const double spacing[3]);
+
+/// The slices [first, end) along the last axis (z, or y for a single z slice) of an image whose
+/// whole extent is `wholeExtent` and which ConvertsAsIs, from `piece`: an extent of the image
+/// holding at least those slices, whole. A LabelImage slab, its labels checked as
+/// ConvertLabelImage checks them (foreground is not required of a slab). False with a
+/// one-sentence reason in `error`.
+bool ConvertLabelSlab(vtkImageData* piece, vtkDataArray* scalars, const int wholeExtent[6], int first, int end,
+  LabelImage& slab, std::string& error);
+
 } // namespace labelmesher
 
 #endif

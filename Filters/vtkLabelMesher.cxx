@@ -16,10 +16,12 @@
 #include "QuadraticOutput.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/MemoryEstimate.h"
+#include "VTKMessages.h"
 #include "vtkBezierCurver.h"
 #include "vtkLabelOctreeMesher.h"
 
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
@@ -29,6 +31,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -142,6 +146,12 @@ double vtkLabelMesher::GetProvenAngleBound(int dimension)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLabelMesher::ReadsSlabsOf(const int dims[3], const double spacing[3])
+{
+  return dims[0] > 0 && dims[1] > 0 && dims[2] > 0 && labelmesher::ConvertsAsIs(dims, spacing);
+}
+
+//------------------------------------------------------------------------------
 const char* vtkLabelMesher::GetMaterialArrayName()
 {
   return arrays::Material;
@@ -217,8 +227,62 @@ int vtkLabelMesher::RequestUpdateExtent(
   {
     return 0;
   }
+  vtkInformation* inputInformation = inputVector[0]->GetInformationObject(0);
+  if (inputInformation && this->ReadsItsSlabOnly(inputInformation))
+  {
+    // No voxels yet: rank 0 has to plan the parts before this process knows its slab.
+    const int none[6] = { 0, -1, 0, -1, 0, -1 };
+    inputInformation->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), none, 6);
+    inputInformation->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+    return 1;
+  }
   labelmesher::RequestWholeImages(inputVector[0]);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLabelMesher::ReadsItsSlabOnly(vtkInformation* in) const
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  if (!this->SharesOutAcrossProcesses() || labelmesher::WorldRank() == 0 ||
+    !in->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) || in->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) == 0 ||
+    !in->Has(SDDP::WHOLE_EXTENT()) || !in->Has(vtkDataObject::SPACING()))
+  {
+    return false;
+  }
+  const int* whole = in->Get(SDDP::WHOLE_EXTENT());
+  const int dims[3] = { whole[1] - whole[0] + 1, whole[3] - whole[2] + 1, whole[5] - whole[4] + 1 };
+  return ReadsSlabsOf(dims, in->Get(vtkDataObject::SPACING()));
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkLabelMesher::UpdateInputExtent(const int extent[6], vtkDataArray*& labels, std::string& problem)
+{
+  labels = nullptr;
+  problem.clear();
+  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
+  vtkAlgorithm* producer = connection ? connection->GetProducer() : nullptr;
+  if (!producer)
+  {
+    return nullptr;
+  }
+  const int port = connection->GetIndex();
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(producer->GetNumberOfOutputPorts());
+  vtkInformation* request = requests->GetInformationObject(port);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent, 6);
+  request->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+  // The producer's error is this process's reason, sent to rank 0: caught, not printed here.
+  const labelmesher::VTKMessages errors(producer, vtkCommand::ErrorEvent);
+  const labelmesher::VTKMessages executiveErrors(producer->GetExecutive(), vtkCommand::ErrorEvent);
+  producer->Update(port, requests);
+  problem = !errors.First().empty() ? errors.First() : executiveErrors.First();
+  vtkImageData* piece = vtkImageData::SafeDownCast(producer->GetOutputDataObject(port));
+  if (piece)
+  {
+    labels = this->GetInputArrayToProcess(0, piece);
+  }
+  return piece;
 }
 
 //------------------------------------------------------------------------------
@@ -239,18 +303,39 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkErrorMacro("Missing input image or outputs.");
     return 0;
   }
+  // A process that reads only its slab has no voxels yet: the image's geometry stands in for it
+  // until its slab is read (MeshAndDecimate).
+  vtkInformation* inputInformation = inputVector[0]->GetInformationObject(0);
+  const bool slabOnly = this->ReadsItsSlabOnly(inputInformation);
+  vtkNew<vtkImageData> geometry;
+  if (slabOnly)
+  {
+    geometry->SetExtent(inputInformation->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()));
+    geometry->SetSpacing(inputInformation->Get(vtkDataObject::SPACING()));
+    if (inputInformation->Has(vtkDataObject::ORIGIN()))
+    {
+      geometry->SetOrigin(inputInformation->Get(vtkDataObject::ORIGIN()));
+    }
+    if (inputInformation->Has(vtkDataObject::DIRECTION()))
+    {
+      geometry->SetDirectionMatrix(inputInformation->Get(vtkDataObject::DIRECTION()));
+    }
+    geometry->GetFieldData()->ShallowCopy(input->GetFieldData());
+    input = geometry;
+  }
   if (this->SharesOutAcrossProcesses())
   {
     // Every process must mesh the same (rank 0 joins their parts: parts of different images or
     // parameters make no mesh), checked before anything that could stop one process and not
-    // the others (they would wait for it in the next step they take together).
+    // the others (they would wait for it in the next step they take together). The labels are
+    // compared slab by slab, as each process takes its slab (StreamedPipeline.cxx).
     std::ostringstream parameters;
     parameters.precision(17);
     parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
                << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
                << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
-    const std::string failure = labelmesher::FirstFailure(labelmesher::DifferenceFromRankZero(
-      labelmesher::ImageFingerprint(input, this->GetInputArrayToProcess(0, inputVector)) + parameters.str()));
+    const std::string failure = labelmesher::FirstFailure(
+      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input, nullptr) + parameters.str()));
     if (!failure.empty())
     {
       vtkErrorMacro(<< failure << ".");
@@ -274,7 +359,8 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   const double meshWeight = this->Decimate ? kMeshAndDecimateWeight : kMeshWeight;
   const double meshShare = meshWeight / (meshWeight + (curve ? kCurveWeight : 0.0));
   const bool meshed = this->Decimate
-    ? this->MeshAndDecimate(input, this->GetInputArrayToProcess(0, inputVector), output, interfaces, curved, meshShare)
+    ? this->MeshAndDecimate(
+        input, this->GetInputArrayToProcess(0, inputVector), slabOnly, output, interfaces, curved, meshShare)
     : this->MeshOnly(input, output, interfaces, meshShare);
   if (meshed && curve && !this->CurveMesh(input, output, curved, meshShare))
   {
@@ -371,8 +457,8 @@ bool vtkLabelMesher::CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear,
 }
 
 //------------------------------------------------------------------------------
-bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output,
-  vtkPolyData* boundary, vtkUnstructuredGrid* quadratic, double share)
+bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, bool slabOnly,
+  vtkUnstructuredGrid* output, vtkPolyData* boundary, vtkUnstructuredGrid* quadratic, double share)
 {
   labelmesher::ImagePlacement placement;
   labelmesher::LabelImage image;
@@ -381,7 +467,19 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   labelmesher::MemoryEstimate estimate;
   labelmesher::MemoryBudget budget;
   const bool quadratic3D = this->Order == 2 && GetImageDimension(input) == 3;
-  if (labelmesher::ConvertLabelImage(input, labels, image, placement, problem))
+  int dims[3];
+  input->GetDimensions(dims);
+  if (slabOnly)
+  {
+    // Its labels come with its slab; until then it knows only the least it will need. Rank 0
+    // estimated the whole run, of which this process holds a share.
+    image.Dimensions = { dims[0], dims[1], dims[2] };
+    estimate.RunBytes = labelmesher::SlabProcessFloorBytes();
+    budget = labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true);
+    problem = labelmesher::RefuseIfTooLarge(
+      estimate.RunBytes, "the least a process that reads its slab of the image holds", budget);
+  }
+  else if (labelmesher::ConvertLabelImage(input, labels, image, placement, problem))
   {
     estimate = labelmesher::EstimateStreamedMemory(image, blockCells);
     if (quadratic3D)
@@ -428,7 +526,29 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   // A process other than rank 0 keeps only the slab of the image its parts need, taken once
   // rank 0 has assigned them; the rest of the converted image is released then.
   labelmesher::SlabSource slabs;
-  if (exchange && exchange->Rank() != 0)
+  if (slabOnly)
+  {
+    slabs = [this, input, dims](int first, int end) {
+      const int axis = dims[2] == 1 ? 1 : 2;
+      int whole[6], extent[6];
+      input->GetExtent(whole);
+      std::copy(whole, whole + 6, extent);
+      extent[2 * axis] = whole[2 * axis] + first;
+      extent[2 * axis + 1] = whole[2 * axis] + end - 1;
+      vtkDataArray* pieceLabels = nullptr;
+      std::string error;
+      vtkImageData* piece = this->UpdateInputExtent(extent, pieceLabels, error);
+      labelmesher::LabelImage slab;
+      if (!error.empty() || !piece || !labelmesher::ConvertLabelSlab(piece, pieceLabels, whole, first, end, slab, error))
+      {
+        throw std::runtime_error("reading slices " + std::to_string(first) + " to " + std::to_string(end - 1) +
+          " of its image failed" + (error.empty() ? std::string() : ": " + error));
+      }
+      piece->ReleaseData(); // converted: the slab is the only copy this process keeps
+      return slab;
+    };
+  }
+  else if (exchange && exchange->Rank() != 0)
   {
     slabs = [whole = std::make_shared<labelmesher::LabelImage>(std::move(image))](int first, int end) mutable {
       if (!whole)

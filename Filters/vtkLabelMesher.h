@@ -100,6 +100,8 @@
 #include "LabelMesherFiltersModule.h" // For export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <string> // For UpdateInputExtent
+
 class vtkDataArray;
 class vtkImageData;
 class vtkPolyData;
@@ -130,6 +132,15 @@ public:
   vtkSetClampMacro(MeshToImageDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MeshToImageDistance, double);
   ///@}
+
+  /**
+   * True when an image of point dimensions `dims` and `spacing` is meshed as it
+   * is (isotropic voxels along its meshed axes; a 2D image across z, neither
+   * resampled nor permuted): a process other than rank 0 of a Distributed run
+   * then reads only the slab its parts need, from an input that can produce
+   * any extent.
+   */
+  static bool ReadsSlabsOf(const int dims[3], const double spacing[3]);
 
   /**
    * The smallest dihedral (3D, dimension 3) or planar (2D) angle, in degrees,
@@ -213,12 +224,17 @@ public:
   /**
    * Share the run out over MPI's processes when MPI runs with more than one
    * (mpirun, started by the application): every process must be given the
-   * whole image and the same parameters; each meshes its parts, and rank 0's
+   * same image and parameters; each meshes its parts, and rank 0's
    * output is the mesh, the same as one process makes; the other processes'
    * outputs are empty. A process that fails makes rank 0 fail with its rank and
-   * reason; every process's image and parameters are compared with rank 0's
-   * first. Default off here (a process meshes its input alone); on in the
-   * ParaView plugin, where the filter asks every process for the whole image.
+   * reason; every process's image geometry and parameters are compared with
+   * rank 0's first, and the labels of each slab a process meshes with rank 0's.
+   * Rank 0 asks its input for the whole image. Another process whose input can
+   * produce any extent (vtkLabelImageReader) asks for none at first, then for
+   * just the slab of slices its parts need (plus a margin), when the image is
+   * meshed as it is (isotropic voxels; a 2D image across z); else for the whole
+   * image too. Default off here (a process meshes its input alone); on in the
+   * ParaView plugin.
    */
   vtkSetMacro(Distributed, bool);
   vtkGetMacro(Distributed, bool);
@@ -322,6 +338,10 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// Distributed and Decimate on, under MPI with more than one process.
   bool SharesOutAcrossProcesses() const;
+  /// A process other than rank 0 of a shared-out run whose input can produce any extent and
+  /// is meshed as it is (no permutation, no resampling): it asks its input for no voxels at
+  /// first, and for the slab its parts need once rank 0 has assigned them.
+  bool ReadsItsSlabOnly(vtkInformation* inputInformation) const;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool Decimate = true;
@@ -347,8 +367,12 @@ protected:
 private:
   // The stages; each returns false when the run ends there (error, abort, no cells).
   /// With Order 2, also the quadratic mesh into `quadratic`.
-  bool MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, vtkUnstructuredGrid* output,
+  /// `slabOnly`: `input` is the image's geometry alone, and the labels are read slab by slab.
+  bool MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, bool slabOnly, vtkUnstructuredGrid* output,
     vtkPolyData* interfaces, vtkUnstructuredGrid* quadratic, double share);
+  /// On a process that ReadsItsSlabOnly: its input brought up to date with `extent`, the
+  /// labels in it (null when there are none), and the producer's first error (empty if none).
+  vtkImageData* UpdateInputExtent(const int extent[6], vtkDataArray*& labels, std::string& problem);
   bool MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share);
   /// False when stopped on request before the curver made its mesh.
   bool CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start);

@@ -33,7 +33,8 @@ bool IsTwoDimensional(vtkImageData* image)
   return vtkLabelMesher::GetImageDimension(image) == 2;
 }
 
-MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress)
+MeshingOutcome RunMeshingPipeline(
+  vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress, vtkAlgorithm* source)
 {
   vtkNew<vtkLabelMesher> mesher;
   mesher->SetDecimate(settings.Decimate);
@@ -55,7 +56,14 @@ MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& se
   mesher->SetMaximumShorteningRounds(settings.MaximumShorteningRounds);
   mesher->SetQualityIterations(settings.QualityIterations);
   mesher->SetMinimumScaledJacobian(settings.MinimumScaledJacobian);
-  mesher->SetInputData(image);
+  if (source)
+  {
+    mesher->SetInputConnection(source->GetOutputPort());
+  }
+  else
+  {
+    mesher->SetInputData(image);
+  }
   const FilterMessages messages = UpdateFilter(mesher, progress);
 
   MeshingOutcome out;

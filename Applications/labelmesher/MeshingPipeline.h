@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 
+class vtkAlgorithm;
 class vtkImageData;
 
 namespace labelmesher_cli
@@ -83,8 +84,11 @@ bool IsTwoDimensional(vtkImageData* image);
 
 /// Runs vtkLabelMesher on `image`; `progress` sees its progress over the whole run (setting
 /// AbortExecute there stops it). Throws MeshingError with the filter's error (also for Curve on a
-/// 3D image) or when it produced no cells.
-MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress);
+/// 3D image) or when it produced no cells. With a `source` (a vtkLabelImageReader that has
+/// read the image's header) the filter reads from it what it needs instead, and `image` holds
+/// only the image's geometry: a process other than rank 0 that reads its slab alone.
+MeshingOutcome RunMeshingPipeline(vtkImageData* image, const MeshingSettings& settings, const FilterProgress& progress,
+  vtkAlgorithm* source = nullptr);
 
 } // namespace labelmesher_cli
 

@@ -26,6 +26,10 @@
 #include "itkObject.h"
 
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkLabelImageReader.h"
+#include "vtkLabelMesher.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
 #include "vtkPolyData.h"
@@ -103,12 +107,15 @@ void WriteReport(const std::string& path, const Report& report, Writer write)
 /// The image read and checked against the command line.
 struct PreparedRun
 {
-  LabeledImage Input;
+  LabeledImage Input; ///< with a Source, the image's geometry alone
+  /// On a process other than rank 0 of a distributed run: the reader that has read the header,
+  /// from which the filter reads the slab this process's parts need.
+  vtkSmartPointer<vtkLabelImageReader> Source;
   labelmesher::MaterialTable Table;
   double ReadSeconds = 0.0;
 };
 
-PreparedRun Prepare(const Arguments& args, bool writes)
+PreparedRun Prepare(const Arguments& args, bool writes, bool readsSlabOnly)
 {
   if (writes)
   {
@@ -116,7 +123,29 @@ PreparedRun Prepare(const Arguments& args, bool writes)
   }
   PreparedRun run;
   const auto readStart = std::chrono::steady_clock::now();
-  run.Input = ReadLabeledImage(args.Input);
+  if (readsSlabOnly && labelmesher::io::ReadsByExtent(args.Input))
+  {
+    run.Source = vtkSmartPointer<vtkLabelImageReader>::New();
+    run.Source->SetFileName(args.Input.c_str());
+    run.Source->UpdateInformation();
+    if (*run.Source->GetErrorText())
+    {
+      throw RunError(run.Source->GetErrorText());
+    }
+    vtkInformation* information = run.Source->GetOutputInformation(0);
+    run.Input.Image = vtkSmartPointer<vtkImageData>::New();
+    run.Input.Image->SetExtent(information->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()));
+    int dims[3];
+    run.Input.Image->GetDimensions(dims);
+    if (!vtkLabelMesher::ReadsSlabsOf(dims, information->Get(vtkDataObject::SPACING())))
+    {
+      run.Source = nullptr; // resampled or permuted: Label Mesher needs it whole, read here with its checks
+    }
+  }
+  if (!run.Source)
+  {
+    run.Input = ReadLabeledImage(args.Input);
+  }
   LabeledImage& input = run.Input;
   vtkImageData* image = input.Image;
   labelmesher::MaterialTable& table = run.Table;
@@ -181,7 +210,8 @@ int Run(const Arguments& args)
       throw RunError("under mpirun the processes share out the decimated pipeline's parts; --no-decimate runs on "
                      "one process");
     }
-    prepared = Prepare(args, root);
+    // A process other than rank 0 reads the image's header; Label Mesher reads its slab later.
+    prepared = Prepare(args, root, distributed && !root);
   }
   catch (const std::exception& e)
   {
@@ -212,7 +242,7 @@ int Run(const Arguments& args)
   settings.Distributed = distributed;
   const double startMemory = labelmesher::ResidentBytes() / 1048576.0;
   TerminalProgress bars(!args.Quiet && root);
-  const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function());
+  const MeshingOutcome meshed = RunMeshingPipeline(image, settings, bars.Function(), prepared.Source);
   bars.Finish();
   if (!root)
   {

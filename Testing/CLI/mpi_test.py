@@ -11,6 +11,7 @@ go on (its input unreadable, its memory limit too small, another image or other
 parameters than rank 0's) ends the run with one line from rank 0 naming it,
 exit status 1, and no file written; --no-decimate is refused the same way."""
 
+import gzip
 import json
 import os
 import subprocess
@@ -49,6 +50,25 @@ def three_labels(n=36):
     labels[(x - 23) ** 2 + (y - 22) ** 2 + (z - 21) ** 2 < 64] = 2
     labels[(z > 27) & (x > 5)] = 3
     return labels
+
+
+def write_float_image(name, values):
+    """`values` as little-endian 32-bit floats: .nrrd raw, .nrrd.gz (gzip NRRD, named .nrrd) or .mha."""
+    data = values.astype("<f4").tobytes()
+    sizes = " ".join(str(n) for n in values.shape[::-1])
+    if name.endswith(".mha"):
+        header = ("ObjectType = Image\nNDims = 3\nDimSize = {}\nElementType = MET_FLOAT\nElementSpacing = 1 1 1\n"
+                  "ElementByteOrderMSB = False\nElementDataFile = LOCAL\n").format(sizes)
+    else:
+        gzipped = name.endswith(".gz")
+        name = name[:-3] if gzipped else name
+        header = "NRRD0004\ntype: float\ndimension: 3\nsizes: {}\nspacings: 1 1 1\nendian: little\n" \
+                 "encoding: {}\n\n".format(sizes, "gzip" if gzipped else "raw")
+        data = gzip.compress(data) if gzipped else data
+    filename = path(name)
+    with open(filename, "wb") as f:
+        f.write(header.encode() + data)
+    return filename
 
 
 def run(command):
@@ -171,9 +191,10 @@ def case_failing_process():
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
                   "-np", "1", EXE, *mesh_args(image, out, "--min-angle", "10")])
     expect_one_line_failure(result, "process 1 of 2: it was given another image or other meshing parameters", out)
-    # Rank 1 is given another image of the same size.
+    # Rank 1 is given another image of the same size. It reads only its slab, whose labels are
+    # compared with rank 0's: a voxel differs in every slice, so that any slab shows it.
     other = three_labels()
-    other[0, 0, 0] = 3
+    other[:, 0, 0] = 3
     other_image = write_nrrd("other.nrrd", other)
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out), ":",
                   "-np", "1", EXE, *mesh_args(other_image, out)])
@@ -199,6 +220,35 @@ def case_failing_process():
     # Nothing to share out without decimation.
     result = run([*MPIRUN, "-np", "2", EXE, "mesh", image, "-o", out, "--no-decimate"])
     expect_one_line_failure(result, "--no-decimate runs on one process", out)
+
+
+def case_slab_only():
+    """A process other than rank 0 reads only the slab of slices its parts need: its file may hold
+    anything beyond that slab. Rank 1's parts lie in the top half of a tall image; its file holds a
+    non-integer label in the first slice, which it never reads, and the run gives the one-process
+    mesh. The same value in its top slice, which it reads, stops the run."""
+    tall = np.concatenate([three_labels(), three_labels()], axis=0).astype(np.float32)
+    for name in ("tall.nrrd", "tall_gzip.nrrd.gz", "tall.mha"):
+        good = write_float_image(name, tall)
+        one, out = path("slab_one.msh"), path("slab_np2.msh")
+        result = run([EXE, *mesh_args(good, one, "--no-measure", "-q")])
+        assert result.returncode == 0, result.stderr
+        for where, slice_index in (("bottom", 0), ("top", tall.shape[0] - 1)):
+            bad_values = tall.copy()
+            bad_values[slice_index, 5, 5] = 0.5
+            bad = write_float_image(where + "_" + name, bad_values)
+            if os.path.exists(out):
+                os.remove(out)
+            result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(good, out, "--no-measure", "-q"), ":",
+                          "-np", "1", EXE, *mesh_args(bad, out, "--no-measure", "-q")])
+            if where == "bottom":
+                assert result.returncode == 0, result.stderr
+                assert open(out, "rb").read() == open(one, "rb").read(), f"{name}: another mesh than one process's"
+            else:
+                expect_one_line_failure(result, "process 1 of 2: ", out)
+                assert "non-integer value 0.5" in result.stderr and f"(5, 5, {slice_index})" in result.stderr, \
+                    result.stderr
+        print(f"OK: {name}: process 1 read its slab alone, and refused a bad value in it")
 
 
 if __name__ == "__main__":

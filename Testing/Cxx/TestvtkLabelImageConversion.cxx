@@ -19,6 +19,7 @@
 #include <functional>
 #include <iterator>
 #include <string>
+#include <utility>
 
 namespace labelmesher
 {
@@ -90,6 +91,53 @@ TEST(LabelImageConversion, ResamplingAndPermutationKeepLabelsAndWidth)
   EXPECT_EQ(cubes.BytesPerLabel(), 1);
   for (int k = 0; k < 6; ++k)
     EXPECT_EQ(cubes.At(1, 0, k), 10 + 1 + 4 * (k / 2)) << k;
+}
+
+TEST(LabelImageConversion, ASlabIsTheConvertedImagesSlicesWhenItConvertsAsIs)
+{
+  // What a process that reads its slab relies on: the image kept as it is has its slices, read
+  // as a piece of the image (with any extent's offset), as the whole image's conversion does.
+  double isotropic[3] = { 0.5, 0.5, 0.5 };
+  const auto whole = Image<vtkUnsignedShortArray>(6, 5, 8, [](vtkIdType v) { return (v * 7) % 400; }, isotropic);
+  int dims[3] = { 6, 5, 8 };
+  EXPECT_TRUE(ConvertsAsIs(dims, isotropic));
+  const int wholeExtent[6] = { 10, 15, -2, 2, 3, 10 }; // an extent that does not start at 0
+  whole->SetExtent(const_cast<int*>(wholeExtent));
+  const LabelImage converted = Convert(whole);
+  for (const auto& [first, end] : { std::pair<int, int>{ 0, 8 }, { 2, 5 }, { 7, 8 } })
+  {
+    // The piece of exactly those slices, and the whole image as a piece holding more.
+    vtkNew<vtkImageData> piece;
+    int extent[6] = { 10, 15, -2, 2, 3 + first, 3 + end - 1 };
+    piece->SetExtent(extent);
+    vtkNew<vtkUnsignedShortArray> values;
+    values->SetNumberOfTuples(piece->GetNumberOfPoints());
+    for (vtkIdType v = 0; v < values->GetNumberOfTuples(); ++v)
+      values->SetValue(v, static_cast<unsigned short>(whole->GetPointData()->GetScalars()->GetComponent(v + first * 30, 0)));
+    piece->GetPointData()->SetScalars(values);
+    for (vtkImageData* given : { static_cast<vtkImageData*>(piece), whole.GetPointer() })
+    {
+      LabelImage slab;
+      std::string error;
+      ASSERT_TRUE(ConvertLabelSlab(given, given->GetPointData()->GetScalars(), wholeExtent, first, end, slab, error))
+        << error;
+      EXPECT_EQ(slab, LabelImage::Slab(converted, first, end)) << first << " " << end;
+    }
+    // A piece short of the slab's slices, or of a row, is refused.
+    LabelImage slab;
+    std::string error;
+    EXPECT_FALSE(ConvertLabelSlab(piece, values, wholeExtent, first > 0 ? first - 1 : first, first > 0 ? end : end + 1,
+      slab, error));
+    EXPECT_NE(error.find("expected"), std::string::npos) << error;
+  }
+  // Resampled or permuted: not as is.
+  double anisotropic[3] = { 0.5, 0.5, 1.0 };
+  EXPECT_FALSE(ConvertsAsIs(dims, anisotropic));
+  int acrossY[3] = { 6, 1, 8 };
+  EXPECT_FALSE(ConvertsAsIs(acrossY, isotropic));
+  int acrossZ[3] = { 6, 5, 1 };
+  double flat[3] = { 0.5, 0.5, 3.0 };
+  EXPECT_TRUE(ConvertsAsIs(acrossZ, flat));
 }
 
 TEST(ImageFingerprint, ChangesWithEveryThingThatPlacesOrLabelsTheMesh)

@@ -105,6 +105,11 @@ MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blo
   return e;
 }
 
+std::uint64_t SlabProcessFloorBytes()
+{
+  return static_cast<std::uint64_t>(kFixedBytes);
+}
+
 MemoryEstimate WithQuadraticStage(MemoryEstimate estimate, bool measured)
 {
   // The stage runs once the decimation has let go of its blocks: its need adds to what the run

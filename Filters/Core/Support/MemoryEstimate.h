@@ -42,6 +42,10 @@ MemoryEstimate EstimateMemory(const LabelImage& image, bool decimate);
 /// The memory of meshing and decimating `image` block by block
 /// (Streaming/StreamedPipeline.h), blocks of `blockCells` initial cells (0: one block).
 MemoryEstimate EstimateStreamedMemory(const LabelImage& image, std::uint64_t blockCells);
+/// What a process that reads only its slab of the image needs at least before it knows the
+/// slab (a process other than rank 0 of a run shared out over several): the fixed part. Its slab
+/// and its blocks come on top; rank 0's EstimateStreamedMemory of the whole run bounds them.
+std::uint64_t SlabProcessFloorBytes();
 /// `estimate` (EstimateStreamedMemory's) with the quadratic stage after the
 /// decimation (vtkLabelMesher's Order 2, Quadratic/QuadraticCurver.h): its
 /// mid-nodes, elastic system and distance certificates, and when `measured`

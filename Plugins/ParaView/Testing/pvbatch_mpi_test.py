@@ -50,14 +50,14 @@ for summary in (one, two):
     assert summary["topology_matches"] and all(m == 1 for m in summary["topology_matches"]), summary
 print(f"OK: pvbatch under mpirun -np 2: the same {one['cells']} cells as one process, every guarantee holds")
 
-# Rank 1 reads another image (the same labels with one voxel changed, as raw NRRD): refused before
-# any meshing, the difference found by the voxels' hash.
+# Rank 1 reads another image (the same labels with a voxel changed in every slice, as raw NRRD):
+# refused, the difference found by the hash of the slab it reads (any slab shows it).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../Testing/Support"))
 from label_nrrd import read_label_nrrd  # noqa: E402
 
 labels, spacing = read_label_nrrd(image)
 labels = labels.copy()
-labels.flat[0] = 1 if labels.flat[0] != 1 else 2
+labels[:, 0, 0] = [1 if v != 1 else 2 for v in labels[:, 0, 0]]
 other = os.path.join(workdir, "other.nrrd")
 with open(other, "wb") as f:
     f.write(("NRRD0004\ntype: {}\ndimension: 3\nsizes: {} {} {}\nspacings: {} {} {}\nencoding: raw\n\n".format(

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The CLI's checked label-image readers (ImageReader.h, SegmentationReader.h, ColorTableReader.h)
-// as a VTK source. NRRD, NIfTI and MetaImage: RequestInformation reads the header alone;
-// RequestData reads the extent asked for, and holds the image once the whole of it was asked
-// for. The other formats: read whole in RequestInformation and held. Held images stay until a
-// setting changes.
+// as a VTK source. NRRD, NIfTI and MetaImage: RequestInformation reads the header alone and
+// RequestData the extent asked for, held only as the output. The other formats: read whole in
+// RequestInformation and held until a setting changes.
 #include "vtkLabelImageReader.h"
 
 #include "ColorTableReader.h"
@@ -161,22 +160,16 @@ int vtkLabelImageReader::RequestData(vtkInformation*, vtkInformationVector**, vt
   const bool wholeExtent = std::equal(extent, extent + 6, whole);
   if (!this->HoldsVoxels && !empty)
   {
-    // Read what was asked for: the whole image is then held (ParaView, rank 0 of a distributed
-    // run), an extent is not (a process that reads its slab once).
+    // Read what was asked for, and hold it only as the output: a process of a distributed run
+    // releases its slab's piece once converted, and the executive asks again only when the
+    // request or a setting changes.
     this->ErrorText.clear();
     try
     {
-      vtkSmartPointer<vtkImageData> read = wholeExtent
-        ? labelmesher::io::ReadLabelImage(this->FileName)
-        : labelmesher::io::ReadLabelImageExtent(this->FileName, extent);
+      vtkSmartPointer<vtkImageData> read = labelmesher::io::ReadLabelImageExtent(this->FileName, extent);
       read->GetFieldData()->ShallowCopy(this->Image->GetFieldData());
-      if (!wholeExtent)
-      {
-        output->ShallowCopy(read);
-        return 1;
-      }
-      this->Image = read;
-      this->HoldsVoxels = true;
+      output->ShallowCopy(read);
+      return 1;
     }
     catch (const std::bad_alloc&)
     {
@@ -186,16 +179,13 @@ int vtkLabelImageReader::RequestData(vtkInformation*, vtkInformationVector**, vt
     {
       this->ErrorText = e.what();
     }
-    if (!this->ErrorText.empty())
+    if (wholeExtent)
     {
-      if (wholeExtent)
-      {
-        this->Image = nullptr; // failed with these settings: neither read nor said again
-      }
-      vtkErrorMacro(<< this->ErrorText);
-      output->Initialize();
-      return 1;
+      this->Image = nullptr; // failed with these settings: neither read nor said again
     }
+    vtkErrorMacro(<< this->ErrorText);
+    output->Initialize();
+    return 1;
   }
   if (empty && !this->HoldsVoxels)
   {

@@ -25,10 +25,11 @@
  * Output: vtkImageData whose point scalars are named `Labels`.
  *
  * Streaming: NRRD, NIfTI and MetaImage files give any extent asked for (VTK's
- * UPDATE_EXTENT) and read only its voxels where ITK can (raw MetaImage and
- * NIfTI; NRRD is read whole, and the rest released at once). The whole image,
- * once asked for, is held until a setting changes; an extent is not held.
- * Segmentations, VTI and PNG files are read whole in RequestInformation.
+ * UPDATE_EXTENT), reading only its voxels: raw and gzip NRRD slice by slice,
+ * one slice held at a time; raw MetaImage and NIfTI through ITK's streamed
+ * reads (other encodings are read whole by ITK, and the rest released at
+ * once). What was read is held only as the output. Segmentations, VTI and PNG
+ * files are read whole in RequestInformation and held until a setting changes.
  * The header's errors come with UpdateInformation, those of the values with
  * the read of the voxels (Update).
  *
@@ -102,8 +103,8 @@ private:
 
   char* FileName = nullptr;
   char* LabelTableFileName = nullptr;
-  /// The last image read, with its field data: the whole image, or its geometry alone (and an
-  /// empty label array) until the whole of it is asked for.
+  /// The last image read, with its field data: the whole image (segmentations, VTI, PNG), or
+  /// its geometry alone and an empty label array (files read by extent).
   vtkSmartPointer<vtkImageData> Image;
   bool HoldsVoxels = false; ///< Image holds the voxels
   vtkMTimeType ImageTime = 0;          ///< this->GetMTime() at the last read, whether or not it failed

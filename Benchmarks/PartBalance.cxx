@@ -10,7 +10,8 @@
 // after the others' parts arrive; it first plans the parts and sends each
 // other rank its assignment, which that rank waits for (counted in its
 // seconds). Per R it prints every rank's seconds, the bytes rank 0 assigned
-// and the bytes sent to it, the balance of the ranks that mesh parts (largest over mean),
+// and the bytes sent to it, the slabs of the image the other ranks hold (mean
+// and largest share of its slices), the balance of the ranks that mesh parts (largest over mean),
 // and a projection of the run's wall time on R cores: rank 0's joining
 // after the slowest rank's meshing (it meshes its own parts meanwhile).
 //
@@ -21,6 +22,7 @@
 #include "MPIStartup.h"
 #include "Octree/OctreeRefinement.h"
 #include "QueuedPartExchange.h"
+#include "Streaming/MeshPart.h"
 #include "Streaming/StreamedPipeline.h"
 #include "Support/ParallelChunks.h"
 #include "SyntheticShapes.h"
@@ -34,6 +36,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace labelmesher;
@@ -71,6 +74,26 @@ double JoiningSeconds(const std::vector<StageTiming>& timings)
     if (t.Stage.rfind("joining parts: ", 0) == 0 || t.Stage.rfind("last pass: ", 0) == 0)
       joining += t.Seconds;
   return joining;
+}
+
+/// The slabs of the image the other ranks hold (slices along its last axis, with the margin),
+/// as shares of its slices: their mean and the largest, over the ranks that have parts.
+std::pair<double, double> SlabShares(const testing::QueuedRun& run, const LabelImage& image)
+{
+  const double slices = image.Dimensions[static_cast<std::size_t>(image.SlabAxis())];
+  double sum = 0.0, largest = 0.0;
+  int counted = 0;
+  for (const auto& [rank, bytes] : run.Assignments)
+  {
+    const PartAssignment assignment = UnpackPartAssignment(bytes);
+    if (assignment.Leaves.empty())
+      continue;
+    const double share = (assignment.SlabEnd - assignment.SlabFirst) / slices;
+    sum += share;
+    largest = std::max(largest, share);
+    ++counted;
+  }
+  return { counted > 0 ? sum / counted : 0.0, largest };
 }
 
 } // namespace
@@ -134,8 +157,8 @@ int main(int argc, char* argv[])
   const double oneSeconds = Seconds(start);
   std::printf("%s: %zu blocks in %zu parts of %zu, %zu cells; one process, one thread: %.2f s\n", name.c_str(),
     one.Streaming.Blocks, one.Streaming.Parts, streaming.PartBlocks, one.Decimated.Mesh.NumberOfCells(), oneSeconds);
-  std::printf("%6s %9s %9s %9s %8s %12s %12s %10s %9s %s\n", "ranks", "max s", "mean s", "rank0 s", "balance",
-    "bytes from 0", "bytes to 0", "joining s", "proj. s", "same mesh");
+  std::printf("%6s %9s %9s %9s %8s %12s %12s %10s %9s %10s %9s %s\n", "ranks", "max s", "mean s", "rank0 s",
+    "balance", "bytes from 0", "bytes to 0", "joining s", "proj. s", "mean slab", "max slab", "same mesh");
   for (int ranks : rankCounts)
   {
     testing::QueuedRun run;
@@ -167,9 +190,10 @@ int main(int argc, char* argv[])
         const double slowest = ranks > 1 ? *std::max_element(seconds.begin() + 1, seconds.end()) : 0.0;
         const double mean = std::accumulate(seconds.begin() + 1, seconds.end(), meshing0) / ranks;
         const double largest = std::max(meshing0, slowest);
-        std::printf("%6d %9.2f %9.2f %9.2f %8.2f %12zu %12zu %10.2f %9.2f %s\n", ranks, largest, mean, seconds[0],
-          largest / mean, BytesAssigned(run), BytesSent(run), joining, largest + joining,
-          same ? "yes" : "NO");
+        const auto [meanSlab, largestSlab] = SlabShares(run, image);
+        std::printf("%6d %9.2f %9.2f %9.2f %8.2f %12zu %12zu %10.2f %9.2f %9.0f%% %8.0f%% %s\n", ranks, largest, mean,
+          seconds[0], largest / mean, BytesAssigned(run), BytesSent(run), joining, largest + joining,
+          100.0 * meanSlab, 100.0 * largestSlab, same ? "yes" : "NO");
       }
     }
   }

@@ -5,10 +5,12 @@
 /**
  * @file ImageFingerprint.h
  * What decides a mesh about a label image, as text: its extent, spacing,
- * origin, direction and a hash (FNV-1a) of its labels' bytes. The processes of a
- * distributed run (the CLI under mpirun, vtkLabelMesher Distributed) compare
- * theirs with rank 0's (DifferenceFromRankZero, MPIPartExchange.h): parts of
- * different images would not join into one mesh. Not installed.
+ * origin, direction and, given its labels, a hash (FNV-1a) of their bytes. The
+ * processes of a distributed run (the CLI under mpirun, vtkLabelMesher
+ * Distributed) compare its geometry with rank 0's (DifferenceFromRankZero,
+ * MPIPartExchange.h): parts of different images would not join into one mesh.
+ * Their labels are compared slab by slab as each process takes its slab
+ * (PartAssignment::SlabHash), since a process may hold no more. Not installed.
  */
 
 #include <string>

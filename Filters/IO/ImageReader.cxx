@@ -511,7 +511,10 @@ bool ReadsByExtent(const std::string& path)
   return !IsSegmentationFile(path) && !EndsWith(lower, ".vti") && !EndsWith(lower, ".png");
 }
 
-vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path)
+namespace
+{
+/// A file read by extent, through ReadWithITK (NrrdSlices for raw and gzip NRRD extents).
+vtkSmartPointer<vtkImageData> ReadByExtent(const std::string& path, const ReadRequest& request)
 {
   if (!ReadsByExtent(path))
   {
@@ -520,8 +523,6 @@ vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path)
   detail::CheckInputFile(path);
   try
   {
-    ReadRequest request;
-    request.What = ReadRequest::Kind::Information;
     return ReadWithITK(path, request);
   }
   catch (const itk::ExceptionObject& e)
@@ -529,25 +530,21 @@ vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path)
     throw detail::ITKReadError(path, e);
   }
 }
+} // namespace
+
+vtkSmartPointer<vtkImageData> ReadLabelImageInformation(const std::string& path)
+{
+  ReadRequest request;
+  request.What = ReadRequest::Kind::Information;
+  return ReadByExtent(path, request);
+}
 
 vtkSmartPointer<vtkImageData> ReadLabelImageExtent(const std::string& path, const int extent[6])
 {
-  if (!ReadsByExtent(path))
-  {
-    throw std::invalid_argument("'" + path + "' is read whole, not by extent");
-  }
-  detail::CheckInputFile(path);
-  try
-  {
-    ReadRequest request;
-    request.What = ReadRequest::Kind::Extent;
-    std::copy(extent, extent + 6, request.Extent);
-    return ReadWithITK(path, request);
-  }
-  catch (const itk::ExceptionObject& e)
-  {
-    throw detail::ITKReadError(path, e);
-  }
+  ReadRequest request;
+  request.What = ReadRequest::Kind::Extent;
+  std::copy(extent, extent + 6, request.Extent);
+  return ReadByExtent(path, request);
 }
 
 LabeledImage ReadLabeledImage(const std::string& path)

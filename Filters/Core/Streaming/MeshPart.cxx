@@ -38,8 +38,10 @@ public:
 class Reader
 {
 public:
-  explicit Reader(const std::vector<char>& bytes)
+  /// `what` names the message in errors: "a mesh part's message", "a process's assignment".
+  Reader(const std::vector<char>& bytes, const char* what)
     : Bytes(bytes)
+    , What(what)
   {
   }
   template <typename T>
@@ -54,7 +56,7 @@ public:
   {
     const auto n = Value<std::uint64_t>();
     if (n > (Bytes.size() - At) / sizeof(T))
-      throw std::runtime_error("a mesh part's message is cut short");
+      throw std::runtime_error(std::string(What) + " is cut short");
     std::vector<T> v(static_cast<std::size_t>(n));
     Take(v.data(), v.size() * sizeof(T));
     return v;
@@ -71,12 +73,13 @@ private:
   void Take(void* to, std::size_t n)
   {
     if (n > Bytes.size() - At)
-      throw std::runtime_error("a mesh part's message is cut short");
+      throw std::runtime_error(std::string(What) + " is cut short");
     if (n > 0)
       std::memcpy(to, Bytes.data() + At, n);
     At += n;
   }
   const std::vector<char>& Bytes;
+  const char* What;
   std::size_t At = 0;
 };
 
@@ -130,7 +133,7 @@ std::vector<char> PackPartMessage(const PartMessage& message)
 
 PartMessage UnpackPartMessage(const std::vector<char>& bytes)
 {
-  Reader r(bytes);
+  Reader r(bytes, "a mesh part's message");
   if (r.Value<std::uint32_t>() != kMagic)
     throw std::runtime_error("a mesh part's message does not start as one");
   PartMessage message;
@@ -243,7 +246,7 @@ std::vector<char> PackPartAssignment(const PartAssignment& a)
 
 PartAssignment UnpackPartAssignment(const std::vector<char>& bytes)
 {
-  Reader r(bytes);
+  Reader r(bytes, "a process's assignment");
   if (r.Value<std::uint32_t>() != kAssignmentMagic)
     throw std::runtime_error("a process's assignment does not start as one");
   PartAssignment a;

@@ -314,6 +314,10 @@ bool ConvertsAsIs(const int dims[3], const double spacing[3])
   double h = std::numeric_limits<double>::max();
   for (int a = 0; a < meshed; ++a)
   {
+    if (!std::isfinite(spacing[a]) || spacing[a] == 0.0)
+    {
+      return false; // not meshed at all (ConvertLabelImage refuses it)
+    }
     h = std::min(h, std::abs(spacing[a]));
   }
   for (int a = 0; a < meshed; ++a)

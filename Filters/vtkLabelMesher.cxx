@@ -43,6 +43,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkLabelMesher);
 
@@ -60,6 +61,41 @@ namespace arrays = labelmesher::arrays;
 
 namespace
 {
+/// Asks for `extent` exactly, as piece 0 of 1: a piece request left by the filter's own
+/// consumers would make a producer that can give sub-extents cut the extent again.
+void RequestExtentAlone(vtkInformation* request, const int extent[6])
+{
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent, 6);
+  request->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+}
+
+/// The image on `connection` comes from a producer that gives any extent asked for: so it says
+/// (CAN_PRODUCE_SUB_EXTENT), or the source before ParaView's post filter does (ParaView places a
+/// vtkPVPostFilter after every source; it passes extent requests on, but not that key).
+bool ProducesAnyExtent(vtkAlgorithmOutput* connection)
+{
+  for (int hop = 0; connection && connection->GetProducer() && hop < 2; ++hop)
+  {
+    vtkAlgorithm* producer = connection->GetProducer();
+    vtkInformation* information = producer->GetOutputInformation(connection->GetIndex());
+    if (information && information->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) &&
+      information->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) != 0)
+    {
+      return true;
+    }
+    if (!producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputPorts() < 1 ||
+      producer->GetNumberOfInputConnections(0) != 1)
+    {
+      return false;
+    }
+    connection = producer->GetInputConnection(0, 0);
+  }
+  return false;
+}
+
 /// The stages' rough weights in a run's time on real images (meshing alone is a small part of
 /// meshing and decimating); each stage's progress fills its share of the whole run's.
 constexpr double kMeshWeight = 0.3, kMeshAndDecimateWeight = 1.0, kCurveWeight = 0.3;
@@ -232,8 +268,7 @@ int vtkLabelMesher::RequestUpdateExtent(
   {
     // No voxels yet: rank 0 has to plan the parts before this process knows its slab.
     const int none[6] = { 0, -1, 0, -1, 0, -1 };
-    inputInformation->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), none, 6);
-    inputInformation->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+    RequestExtentAlone(inputInformation, none);
     return 1;
   }
   labelmesher::RequestWholeImages(inputVector[0]);
@@ -244,9 +279,8 @@ int vtkLabelMesher::RequestUpdateExtent(
 bool vtkLabelMesher::ReadsItsSlabOnly(vtkInformation* in) const
 {
   using SDDP = vtkStreamingDemandDrivenPipeline;
-  if (!this->SharesOutAcrossProcesses() || labelmesher::WorldRank() == 0 ||
-    !in->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) || in->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) == 0 ||
-    !in->Has(SDDP::WHOLE_EXTENT()) || !in->Has(vtkDataObject::SPACING()))
+  if (!this->SharesOutAcrossProcesses() || labelmesher::WorldRank() == 0 || !in->Has(SDDP::WHOLE_EXTENT()) ||
+    !in->Has(vtkDataObject::SPACING()) || !ProducesAnyExtent(const_cast<vtkLabelMesher*>(this)->GetInputConnection(0, 0)))
   {
     return false;
   }
@@ -269,14 +303,27 @@ vtkImageData* vtkLabelMesher::UpdateInputExtent(const int extent[6], vtkDataArra
   const int port = connection->GetIndex();
   vtkNew<vtkInformationVector> requests;
   requests->SetNumberOfInformationObjects(producer->GetNumberOfOutputPorts());
-  vtkInformation* request = requests->GetInformationObject(port);
-  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent, 6);
-  request->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
-  // The producer's error is this process's reason, sent to rank 0: caught, not printed here.
-  const labelmesher::VTKMessages errors(producer, vtkCommand::ErrorEvent);
-  const labelmesher::VTKMessages executiveErrors(producer->GetExecutive(), vtkCommand::ErrorEvent);
-  producer->Update(port, requests);
-  problem = !errors.First().empty() ? errors.First() : executiveErrors.First();
+  RequestExtentAlone(requests->GetInformationObject(port), extent);
+  // The producer's error (or its source's, behind ParaView's post filter) is this process's
+  // reason, sent to rank 0: caught, not printed here.
+  std::vector<std::unique_ptr<labelmesher::VTKMessages>> errors;
+  for (vtkAlgorithm* source = producer; source; source = source->GetNumberOfInputPorts() > 0 &&
+         source->GetNumberOfInputConnections(0) == 1 && source->IsA("vtkPVPostFilter")
+         ? source->GetInputAlgorithm(0, 0)
+         : nullptr)
+  {
+    errors.push_back(std::make_unique<labelmesher::VTKMessages>(source, vtkCommand::ErrorEvent));
+    errors.push_back(std::make_unique<labelmesher::VTKMessages>(source->GetExecutive(), vtkCommand::ErrorEvent));
+  }
+  const bool updated = producer->Update(port, requests) != 0;
+  for (auto it = errors.rbegin(); it != errors.rend() && problem.empty(); ++it)
+  {
+    problem = (*it)->First(); // the source's first: what the others failed on
+  }
+  if (!updated && problem.empty())
+  {
+    problem = "its input failed to update";
+  }
   vtkImageData* piece = vtkImageData::SafeDownCast(producer->GetOutputDataObject(port));
   if (piece)
   {
@@ -529,6 +576,20 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   if (slabOnly)
   {
     slabs = [this, input, dims](int first, int end) {
+      if (first >= end)
+      {
+        return labelmesher::LabelImage::EmptySlab({ dims[0], dims[1], dims[2] }, first, first); // reads no voxel
+      }
+      // Its memory limit, now that its share is known: at least the slab, a byte a voxel.
+      const std::uint64_t slabVoxels = static_cast<std::uint64_t>(end - first) * static_cast<std::uint64_t>(dims[0]) *
+        static_cast<std::uint64_t>(dims[2] == 1 ? 1 : dims[1]);
+      const std::string refused = labelmesher::RefuseIfTooLarge(labelmesher::SlabProcessFloorBytes() + slabVoxels,
+        "its slab of " + labelmesher::WithThousandsSeparators(slabVoxels) + " voxels",
+        labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true));
+      if (!refused.empty())
+      {
+        throw std::runtime_error(refused);
+      }
       const int axis = dims[2] == 1 ? 1 : 2;
       int whole[6], extent[6];
       input->GetExtent(whole);

@@ -60,7 +60,10 @@ ImageBoundary::ImageBoundary(const LabelImage& image)
   }
 
   for (int a = 0; a < Dimension; ++a)
+  {
     Bins[a] = (n[a] + 2) / Bin + 1;
+    Size[static_cast<std::size_t>(a)] = n[a];
+  }
   // Bin b holds the face centres c with b = floor((c + 1) / Bin): every face
   // it would hold on the whole image when the voxels along the slab axis
   // [Bin b - 1, Bin b + 3] are held (or outside the image).
@@ -149,6 +152,12 @@ void ImageBoundary::Pieces(const Point3& lo, const Point3& hi, std::int32_t low,
     from[a] = BinOf(lo[a] - 0.5, a);
     to[a] = BinOf(hi[a] + 0.5, a);
   }
+  // Every face lies within [-0.5, n - 0.5] along every axis: a box beyond that along any axis
+  // meets none, whatever slices a slab holds (a process's parts may hold cells far beyond the
+  // image, and no slab is cut for them).
+  for (int a = 0; a < Dimension; ++a)
+    if (hi[a] < -0.5 || lo[a] > Size[static_cast<std::size_t>(a)] - 0.5)
+      return;
   const int slab = Dimension - 1;
   if (from[slab] < WholeBins[0] || to[slab] > WholeBins[1])
     throw std::logic_error("the image boundary was asked for faces beyond this process's slab of the image");

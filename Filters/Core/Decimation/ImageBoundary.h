@@ -65,6 +65,7 @@ private:
   // those in [WholeBins[0], WholeBins[1]] hold every face they would hold on
   // the whole image.
   static constexpr int Bin = 4;
+  std::array<int, 3> Size{ 0, 0, 0 }; ///< the image's voxels per axis
   std::array<int, 3> Bins{ 1, 1, 1 };
   int FirstBin = 0, StoredBins = 1;
   std::array<int, 2> WholeBins{ 0, 0 };

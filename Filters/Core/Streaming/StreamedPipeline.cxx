@@ -651,10 +651,16 @@ PartAssignment AssignmentOf(int rank, int ranks, const LabelImage& image, const 
     low = std::min(low, leaf.Box.Origin[static_cast<std::size_t>(axis)]);
     high = std::max(high, leaf.Box.Origin[static_cast<std::size_t>(axis)] + leaf.Box.Size);
   }
-  // A run beyond the image's end (the octree's cube is larger) still reads the last slices.
   const int slices = image.Dimensions[static_cast<std::size_t>(axis)];
-  a.SlabFirst = std::clamp(low - margin, 0, std::max(0, slices - margin));
-  a.SlabEnd = std::clamp(high + margin, a.SlabFirst, slices);
+  if (low >= high)
+  {
+    a.SlabFirst = a.SlabEnd = 0; // no leaf reads the image: an empty slab
+  }
+  else
+  {
+    a.SlabFirst = std::clamp(low - margin, 0, slices);
+    a.SlabEnd = std::clamp(high + margin, a.SlabFirst, slices);
+  }
   a.SlabHash = image.SliceHash(a.SlabFirst, a.SlabEnd);
   return a;
 }

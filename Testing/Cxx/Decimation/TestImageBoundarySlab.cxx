@@ -127,12 +127,38 @@ TEST(ImageBoundarySlab, IsTheWholeImagesBoundaryInItsInterior)
               EXPECT_TRUE(SamePieces(fromWhole, fromSlab)) << "slab " << first << " " << end << " at " << at;
             const double inside = std::min(first == 0 ? 1e9 : at - first, end == slices ? 1e9 : end - 1 - (at + 0.25));
             EXPECT_FALSE(refused && inside >= ImageBoundary::SlabMargin(0.0)) << "slab " << first << " " << end << " at " << at;
-            EXPECT_FALSE(!refused && step < 0) << "a query beyond the slab was answered: " << at;
+            // Beyond the slab but within the image: refused (beyond the image, no face is
+            // there, and the empty answer is exact).
+            const bool inImage = at + 0.25 >= -0.5 && at <= slices - 0.5;
+            EXPECT_FALSE(!refused && step < 0 && inImage) << "a query beyond the slab was answered: " << at;
           }
         }
       }
     }
   }
+}
+
+TEST(ImageBoundarySlab, AnswersABoxBeyondTheImageWhateverItsSlices)
+{
+  // A process's parts may hold cells far beyond the image along another axis than the slab's,
+  // in slices its slab does not hold: no face lies there, and the empty answer is exact.
+  const auto random = testing::GenerateRandomLabelImageWithDescription(951020, 3);
+  const LabelImage image = testing::StackedAlongLastAxis(random.Image, 4);
+  const int slices = image.Dimensions[2];
+  const LabelImage slab = LabelImage::Slab(image, slices / 2, slices);
+  const ImageBoundary part(slab);
+  const ImageBoundary whole(image);
+  const ImageBoundary::Face& any = whole.Faces().front();
+  const double beyondX = image.Dimensions[0] + 0.25;
+  std::vector<ConvexPiece> pieces;
+  EXPECT_NO_THROW(part.Pieces({ beyondX, 0, 0 }, { beyondX + 3, 2, 2 }, any.Low, any.High, pieces));
+  EXPECT_TRUE(pieces.empty());
+  EXPECT_NO_THROW(part.Pieces({ 0, -9, 0 }, { 3, -0.75, 2 }, any.Low, any.High, pieces));
+  EXPECT_TRUE(pieces.empty());
+  // Within the image's extent along every axis but beyond the slab: refused.
+  EXPECT_THROW(part.Pieces({ 0, 0, 0 }, { 3, 2, 2 }, any.Low, any.High, pieces), std::logic_error);
+  // Touching the image's last faces (x = n - 0.5) is within it.
+  EXPECT_THROW(part.Pieces({ beyondX - 0.75, 0, 0 }, { beyondX + 3, 2, 2 }, any.Low, any.High, pieces), std::logic_error);
 }
 
 } // namespace

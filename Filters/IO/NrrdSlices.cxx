@@ -70,20 +70,19 @@ public:
       this->Z.avail_out = static_cast<uInt>(chunk);
       while (this->Z.avail_out > 0)
       {
-        if (this->Z.avail_in == 0)
+        if (this->Z.avail_in == 0 && !this->Refill())
         {
-          this->In.read(this->Compressed.data(), static_cast<std::streamsize>(this->Compressed.size()));
-          this->Z.next_in = reinterpret_cast<Bytef*>(this->Compressed.data());
-          this->Z.avail_in = static_cast<uInt>(this->In.gcount());
-          if (this->Z.avail_in == 0)
-          {
-            throw InputError("cannot read '" + this->Path + "': its gzip-compressed voxels end before the image does");
-          }
+          throw InputError("cannot read '" + this->Path + "': its gzip-compressed voxels end before the image does");
         }
         const int status = inflate(&this->Z, Z_NO_FLUSH);
         if (status == Z_STREAM_END && this->Z.avail_out > 0)
         {
-          throw InputError("cannot read '" + this->Path + "': its gzip-compressed voxels end before the image does");
+          // A file of several gzip members (bgzip, concatenated files) goes on in the next one.
+          if (!this->NextMember())
+          {
+            throw InputError("cannot read '" + this->Path + "': its gzip-compressed voxels end before the image does");
+          }
+          continue;
         }
         if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR)
         {
@@ -93,6 +92,37 @@ public:
       }
       into += chunk;
       bytes -= chunk;
+    }
+  }
+
+  /// Once every voxel is read: a gzip stream is inflated to its end, so that its check sum is
+  /// tested (surplus bytes are dropped, and a file that ends without the gzip trailer passes,
+  /// as NrrdIO lets it).
+  void Finish()
+  {
+    if (!this->Gzip)
+    {
+      return;
+    }
+    std::vector<char> dropped(std::size_t(1) << 16);
+    for (;;)
+    {
+      if (this->Z.avail_in == 0 && !this->Refill())
+      {
+        return;
+      }
+      this->Z.next_out = reinterpret_cast<Bytef*>(dropped.data());
+      this->Z.avail_out = static_cast<uInt>(dropped.size());
+      const int status = inflate(&this->Z, Z_NO_FLUSH);
+      if (status == Z_STREAM_END)
+      {
+        return;
+      }
+      if (status != Z_OK && status != Z_BUF_ERROR)
+      {
+        throw InputError("cannot read '" + this->Path + "': its gzip-compressed voxels are damaged (" +
+          (this->Z.msg ? this->Z.msg : "zlib error " + std::to_string(status)) + ")");
+      }
     }
   }
 
@@ -114,6 +144,25 @@ public:
   }
 
 private:
+  /// More compressed bytes from the file; false at its end.
+  bool Refill()
+  {
+    this->In.read(this->Compressed.data(), static_cast<std::streamsize>(this->Compressed.size()));
+    this->Z.next_in = reinterpret_cast<Bytef*>(this->Compressed.data());
+    this->Z.avail_in = static_cast<uInt>(this->In.gcount());
+    return this->Z.avail_in > 0;
+  }
+
+  /// After a gzip member's end: the next member, if the file has more; false otherwise.
+  bool NextMember()
+  {
+    if (this->Z.avail_in == 0 && !this->Refill())
+    {
+      return false;
+    }
+    return inflateReset(&this->Z) == Z_OK;
+  }
+
   std::string Path;
   bool Gzip;
   std::ifstream In;
@@ -132,6 +181,13 @@ bool ReadsNrrdBySlices(const TextHeader& header)
 void ReadNrrdBox(const std::string& path, const TextHeader& header, const int dims[3], std::size_t voxelBytes,
   bool bigEndian, const int extent[6], char* out)
 {
+  for (int a = 0; a < 3; ++a)
+  {
+    if (extent[2 * a] < 0 || extent[2 * a + 1] >= dims[a] || extent[2 * a] > extent[2 * a + 1])
+    {
+      throw InputError("cannot read an extent of '" + path + "' beyond the image");
+    }
+  }
   const std::size_t nx = static_cast<std::size_t>(dims[0]), ny = static_cast<std::size_t>(dims[1]);
   const std::size_t sliceBytes = nx * ny * voxelBytes;
   const std::size_t rowBytes = static_cast<std::size_t>(extent[1] - extent[0] + 1) * voxelBytes;
@@ -148,6 +204,10 @@ void ReadNrrdBox(const std::string& path, const TextHeader& header, const int di
         rowBytes);
       out += rowBytes;
     }
+  }
+  if (extent[5] == dims[2] - 1)
+  {
+    voxels.Finish(); // every voxel read: the stream's end and check sum too
   }
   if (bigEndian && voxelBytes > 1) // this machine is little-endian (x86-64, arm64 as Debian runs them)
   {

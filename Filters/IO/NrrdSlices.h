@@ -7,8 +7,10 @@
  * The voxels of a box of a NRRD image, raw or gzip-compressed, read slice by slice along z with
  * one slice held at a time: what ITK's NrrdIO cannot do (it reads and inflates the whole file),
  * for a process that needs only its slab of a large image (vtkLabelImageReader's extents).
- * A gzip stream is inflated from its start, the slices before the box discarded as they come.
- * Internal to ImageReader.cxx; throws InputError.
+ * A gzip stream is inflated from its start, the slices before the box discarded as they come;
+ * several gzip members follow one another; a read that reaches the last slice inflates to the
+ * stream's end, testing its check sum. A 2D image is one slice: held whole while its rows are
+ * read. Internal to ImageReader.cxx; throws InputError.
  */
 
 #include "TextHeader.h"
@@ -29,8 +31,8 @@ bool ReadsNrrdBySlices(const TextHeader& header);
 
 /// Writes the voxels of `extent` (VTK's order: x fastest; within an image of `dims` voxels) into
 /// `out`, each `voxelBytes` long and in this machine's byte order (`bigEndian`: the file's is
-/// big-endian). `out` holds the box's voxels. Throws InputError when the voxels end early or the
-/// gzip stream is broken.
+/// big-endian). `out` holds the box's voxels. Throws InputError for an extent beyond the image,
+/// voxels that end early or a broken gzip stream.
 void ReadNrrdBox(const std::string& path, const TextHeader& header, const int dims[3], std::size_t voxelBytes,
   bool bigEndian, const int extent[6], char* out);
 

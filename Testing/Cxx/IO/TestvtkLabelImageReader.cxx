@@ -5,6 +5,7 @@
 #include "vtkLabelImageReader.h"
 
 #include "FilterTestSupport.h"
+#include "ImageReader.h"
 #include "ScratchFolder.h"
 
 #include "vtkDoubleArray.h"
@@ -185,10 +186,33 @@ TEST_F(ReaderTest, AnExtentOfABigEndianOrDamagedNrrd)
     for (vtkIdType v = 0; v < scalars->GetNumberOfTuples(); ++v)
       ASSERT_EQ(scalars->GetComponent(v, 0), 300.0 + pattern[static_cast<std::size_t>(v + 35)]) << encoding << " voxel " << v;
   }
+  // An extent beyond the image is refused, whatever reads it (slices, or ITK).
+  for (const std::string& name : { std::string("big_raw.nrrd"), std::string("big_gzip.nrrd") })
+  {
+    const int beyond[6] = { 0, 7, 0, 4, 0, 0 };
+    EXPECT_THROW(labelmesher::io::ReadLabelImageExtent(this->Path(name), beyond), labelmesher::io::InputError) << name;
+    const int negative[6] = { 0, 6, -1, 4, 0, 0 };
+    EXPECT_THROW(labelmesher::io::ReadLabelImageExtent(this->Path(name), negative), labelmesher::io::InputError) << name;
+  }
   // A gzip stream cut short, and one damaged: one line each, no voxels.
   const std::string compressed = Gzip(std::string(pattern.begin(), pattern.end()));
   std::string damaged = compressed;
   damaged[damaged.size() / 2] = static_cast<char>(damaged[damaged.size() / 2] ^ 0x5a);
+  // Two gzip members, as concatenated files make them: read as one stream.
+  {
+    const std::string path = this->Path("members.nrrd");
+    const std::string bytes(pattern.begin(), pattern.end());
+    WriteFile(path, NrrdHeader("uchar", "gzip") + Gzip(bytes.substr(0, 50)) + Gzip(bytes.substr(50)));
+    vtkNew<vtkLabelImageReader> reader;
+    MessageRecorder errors(reader, vtkCommand::ErrorEvent);
+    reader->SetFileName(path.c_str());
+    const int last[6] = { 0, 6, 0, 4, 2, 3 };
+    vtkDataArray* scalars = ReadExtent(reader, last)->GetPointData()->GetScalars();
+    ASSERT_TRUE(errors.Messages.empty()) << errors.Messages[0];
+    ASSERT_NE(scalars, nullptr);
+    for (vtkIdType v = 0; v < scalars->GetNumberOfTuples(); ++v)
+      ASSERT_EQ(scalars->GetComponent(v, 0), pattern[static_cast<std::size_t>(v + 70)]) << "voxel " << v;
+  }
   for (const auto& [name, voxels, problem] : { std::tuple<std::string, std::string, std::string>{ "short.nrrd",
          compressed.substr(0, compressed.size() / 2), "end before the image does" },
          { "damaged.nrrd", damaged, "" } })

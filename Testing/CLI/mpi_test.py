@@ -11,13 +11,14 @@ go on (its input unreadable, its memory limit too small, another image or other
 parameters than rank 0's) ends the run with one line from rank 0 naming it,
 exit status 1, and no file written; --no-decimate is refused the same way."""
 
-import gzip
 import json
 import os
 import subprocess
 import sys
 
 import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from label_nrrd import three_labels, write_float_image  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -39,35 +40,6 @@ def write_nrrd(name, labels):
               "encoding: raw\n\n").format(*labels.shape[::-1])
     with open(filename, "wb") as f:
         f.write(header.encode() + labels.astype(np.uint8).tobytes())
-    return filename
-
-
-def three_labels(n=36):
-    """Two balls and a slab: enough interface for many small blocks."""
-    z, y, x = np.mgrid[0:n, 0:n, 0:n]
-    labels = np.zeros((n, n, n), np.uint8)
-    labels[(x - 12) ** 2 + (y - 13) ** 2 + (z - 14) ** 2 < 81] = 1
-    labels[(x - 23) ** 2 + (y - 22) ** 2 + (z - 21) ** 2 < 64] = 2
-    labels[(z > 27) & (x > 5)] = 3
-    return labels
-
-
-def write_float_image(name, values):
-    """`values` as little-endian 32-bit floats: .nrrd raw, .nrrd.gz (gzip NRRD, named .nrrd) or .mha."""
-    data = values.astype("<f4").tobytes()
-    sizes = " ".join(str(n) for n in values.shape[::-1])
-    if name.endswith(".mha"):
-        header = ("ObjectType = Image\nNDims = 3\nDimSize = {}\nElementType = MET_FLOAT\nElementSpacing = 1 1 1\n"
-                  "ElementByteOrderMSB = False\nElementDataFile = LOCAL\n").format(sizes)
-    else:
-        gzipped = name.endswith(".gz")
-        name = name[:-3] if gzipped else name
-        header = "NRRD0004\ntype: float\ndimension: 3\nsizes: {}\nspacings: 1 1 1\nendian: little\n" \
-                 "encoding: {}\n\n".format(sizes, "gzip" if gzipped else "raw")
-        data = gzip.compress(data) if gzipped else data
-    filename = path(name)
-    with open(filename, "wb") as f:
-        f.write(header.encode() + data)
     return filename
 
 
@@ -229,14 +201,14 @@ def case_slab_only():
     mesh. The same value in its top slice, which it reads, stops the run."""
     tall = np.concatenate([three_labels(), three_labels()], axis=0).astype(np.float32)
     for name in ("tall.nrrd", "tall_gzip.nrrd.gz", "tall.mha"):
-        good = write_float_image(name, tall)
+        good = write_float_image(path(name), tall)
         one, out = path("slab_one.msh"), path("slab_np2.msh")
         result = run([EXE, *mesh_args(good, one, "--no-measure", "-q")])
         assert result.returncode == 0, result.stderr
         for where, slice_index in (("bottom", 0), ("top", tall.shape[0] - 1)):
             bad_values = tall.copy()
             bad_values[slice_index, 5, 5] = 0.5
-            bad = write_float_image(where + "_" + name, bad_values)
+            bad = write_float_image(path(where + "_" + name), bad_values)
             if os.path.exists(out):
                 os.remove(out)
             result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(good, out, "--no-measure", "-q"), ":",

@@ -5,7 +5,8 @@ pvbatch_mpi_test.py to compare between one process and several.
 
 usage: [mpirun -np N] pvbatch [--no-mpi] pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json
        mpirun -np N pvbatch --symmetric pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json OTHER
-(every process runs the script; those but rank 0 read OTHER: the run must refuse it)
+(every process runs the script; those but rank 0 read OTHER: another image, which the run must
+refuse, or one that differs only beyond their slabs, which gives rank 0's image's mesh)
 """
 import hashlib
 import json

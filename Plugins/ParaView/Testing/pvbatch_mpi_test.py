@@ -4,7 +4,8 @@ every process reads the image with the plugin's reader, each meshes its parts, r
 them; the output fetched to rank 0 holds the same cells (compared by their corners' positions),
 cells of both processes (cell array Process), and every guarantee measured on it; Label Octree
 Mesher, which does not share its run out, meshes the image once, not once a process. A process given
-another image than rank 0's makes the run refuse, in one error line naming it, with no mesh.
+another image than rank 0's makes the run refuse, in one error line naming it, with no mesh. A
+process other than rank 0 reads only the slab of the image its parts need.
 
 usage: python3 pvbatch_mpi_test.py PVBATCH PLUGIN IMAGE BLOCK_CELLS WORKDIR
 (PYTHONPATH: ParaView's Python packages, as for pvbatch.)
@@ -14,6 +15,8 @@ import os
 import subprocess
 import sys
 
+import numpy as np
+
 pvbatch, plugin, image, block_cells, workdir = sys.argv[1:6]
 os.makedirs(workdir, exist_ok=True)
 script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pvbatch_distributed.py")
@@ -21,7 +24,7 @@ script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pvbatch_distr
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def run(prefix, name, *other):
+def run(prefix, name, *other, image=image, block_cells=block_cells):
     out = os.path.join(workdir, name + ".json")
     if os.path.exists(out):
         os.remove(out)
@@ -53,7 +56,7 @@ print(f"OK: pvbatch under mpirun -np 2: the same {one['cells']} cells as one pro
 # Rank 1 reads another image (the same labels with a voxel changed in every slice, as raw NRRD):
 # refused, the difference found by the hash of the slab it reads (any slab shows it).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../Testing/Support"))
-from label_nrrd import read_label_nrrd  # noqa: E402
+from label_nrrd import read_label_nrrd, three_labels, write_float_image  # noqa: E402
 
 labels, spacing = read_label_nrrd(image)
 labels = labels.copy()
@@ -68,3 +71,18 @@ assert refused["cells"] == 0, refused
 errors = [line for line in stderr.splitlines() if "ERR|" in line]
 assert errors and all("process 1 of 2: it was given another image" in line for line in errors), stderr
 print("OK: a process given another image is named, no mesh:", errors[0].split("): ", 1)[-1])
+
+# Rank 1 reads only the slab its parts need (through ParaView's post filter): its file holds a
+# non-integer label in the first slice of a tall image, beyond its slab, and the mesh is the one
+# process's mesh of the right image.
+tall = np.concatenate([three_labels(), three_labels()], axis=0).astype(np.float32)
+good = write_float_image(os.path.join(workdir, "tall.nrrd"), tall)
+tall[0, 5, 5] = 0.5
+beyond = write_float_image(os.path.join(workdir, "tall_bottom.nrrd"), tall)
+alone, _ = run([pvbatch, "--no-mpi"], "tall_one", image=good, block_cells="2000")
+slabs, stderr = run(["mpirun", "-q", "-np", "2", pvbatch, "--symmetric"], "tall_two", beyond, image=good,
+                    block_cells="2000")
+assert alone["cells"] > 0 and (slabs["cells"], slabs["cells_sha256"]) == (alone["cells"], alone["cells_sha256"]), \
+    (alone, slabs, stderr)
+assert slabs["process_values"] == [0, 1], slabs
+print(f"OK: process 1 read only its slab: the same {alone['cells']} cells, its file's bad slice never read")

@@ -72,28 +72,58 @@ void RequestExtentAlone(vtkInformation* request, const int extent[6])
   request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
 }
 
+/// What ParaView's post filter `producer` passes on (ParaView places a vtkPVPostFilter after
+/// every source: it passes extent requests on, but not CAN_PRODUCE_SUB_EXTENT, and its source's
+/// errors are the reason it fails), or null when `producer` is not one.
+vtkAlgorithmOutput* BehindPostFilter(vtkAlgorithm* producer)
+{
+  if (!producer || !producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputPorts() < 1 ||
+    producer->GetNumberOfInputConnections(0) != 1)
+  {
+    return nullptr;
+  }
+  return producer->GetInputConnection(0, 0);
+}
+
 /// The image on `connection` comes from a producer that gives any extent asked for: so it says
-/// (CAN_PRODUCE_SUB_EXTENT), or the source before ParaView's post filter does (ParaView places a
-/// vtkPVPostFilter after every source; it passes extent requests on, but not that key).
+/// (CAN_PRODUCE_SUB_EXTENT), or the source before ParaView's post filter does.
 bool ProducesAnyExtent(vtkAlgorithmOutput* connection)
 {
-  for (int hop = 0; connection && connection->GetProducer() && hop < 2; ++hop)
+  for (; connection && connection->GetProducer(); connection = BehindPostFilter(connection->GetProducer()))
   {
-    vtkAlgorithm* producer = connection->GetProducer();
-    vtkInformation* information = producer->GetOutputInformation(connection->GetIndex());
+    vtkInformation* information = connection->GetProducer()->GetOutputInformation(connection->GetIndex());
     if (information && information->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) &&
       information->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) != 0)
     {
       return true;
     }
-    if (!producer->IsA("vtkPVPostFilter") || producer->GetNumberOfInputPorts() < 1 ||
-      producer->GetNumberOfInputConnections(0) != 1)
-    {
-      return false;
-    }
-    connection = producer->GetInputConnection(0, 0);
   }
   return false;
+}
+
+/// Throws unless a process that holds `slices` slices of an image of `dims` voxels fits its
+/// memory limit (MemoryBudget.h): the fixed floor and its slab, a byte a voxel at least.
+void RefuseSlabBeyondMemory(const int dims[3], int slices, double memoryLimit)
+{
+  const std::uint64_t voxels = static_cast<std::uint64_t>(slices) * static_cast<std::uint64_t>(dims[0]) *
+    static_cast<std::uint64_t>(dims[2] == 1 ? 1 : dims[1]);
+  const std::string refused = labelmesher::RefuseIfTooLarge(labelmesher::SlabProcessFloorBytes() + voxels,
+    "its slab of " + labelmesher::WithThousandsSeparators(voxels) + " voxels",
+    labelmesher::AvailableMemory(memoryLimit, /*startsMPI=*/true));
+  if (!refused.empty())
+  {
+    throw std::runtime_error(refused);
+  }
+}
+
+/// The extent of slices [first, end) of the image whose extent is `whole`: along its last axis
+/// (y for a 2D image), every voxel across.
+void SlabExtent(const int whole[6], int first, int end, int extent[6])
+{
+  const int axis = whole[5] == whole[4] ? 1 : 2;
+  std::copy(whole, whole + 6, extent);
+  extent[2 * axis] = whole[2 * axis] + first;
+  extent[2 * axis + 1] = whole[2 * axis] + end - 1;
 }
 
 /// The stages' rough weights in a run's time on real images (meshing alone is a small part of
@@ -307,11 +337,9 @@ vtkImageData* vtkLabelMesher::UpdateInputExtent(const int extent[6], vtkDataArra
   // The producer's error (or its source's, behind ParaView's post filter) is this process's
   // reason, sent to rank 0: caught, not printed here.
   std::vector<std::unique_ptr<labelmesher::VTKMessages>> errors;
-  for (vtkAlgorithm* source = producer; source; source = source->GetNumberOfInputPorts() > 0 &&
-         source->GetNumberOfInputConnections(0) == 1 && source->IsA("vtkPVPostFilter")
-         ? source->GetInputAlgorithm(0, 0)
-         : nullptr)
+  for (vtkAlgorithmOutput* c = connection; c && c->GetProducer(); c = BehindPostFilter(c->GetProducer()))
   {
+    vtkAlgorithm* source = c->GetProducer();
     errors.push_back(std::make_unique<labelmesher::VTKMessages>(source, vtkCommand::ErrorEvent));
     errors.push_back(std::make_unique<labelmesher::VTKMessages>(source->GetExecutive(), vtkCommand::ErrorEvent));
   }
@@ -382,7 +410,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
                << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
                << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
     const std::string failure = labelmesher::FirstFailure(
-      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input, nullptr) + parameters.str()));
+      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input) + parameters.str()));
     if (!failure.empty())
     {
       vtkErrorMacro(<< failure << ".");
@@ -580,22 +608,10 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
       {
         return labelmesher::LabelImage::EmptySlab({ dims[0], dims[1], dims[2] }, first, first); // reads no voxel
       }
-      // Its memory limit, now that its share is known: at least the slab, a byte a voxel.
-      const std::uint64_t slabVoxels = static_cast<std::uint64_t>(end - first) * static_cast<std::uint64_t>(dims[0]) *
-        static_cast<std::uint64_t>(dims[2] == 1 ? 1 : dims[1]);
-      const std::string refused = labelmesher::RefuseIfTooLarge(labelmesher::SlabProcessFloorBytes() + slabVoxels,
-        "its slab of " + labelmesher::WithThousandsSeparators(slabVoxels) + " voxels",
-        labelmesher::AvailableMemory(this->MemoryLimit, /*startsMPI=*/true));
-      if (!refused.empty())
-      {
-        throw std::runtime_error(refused);
-      }
-      const int axis = dims[2] == 1 ? 1 : 2;
+      RefuseSlabBeyondMemory(dims, end - first, this->MemoryLimit);
       int whole[6], extent[6];
       input->GetExtent(whole);
-      std::copy(whole, whole + 6, extent);
-      extent[2 * axis] = whole[2 * axis] + first;
-      extent[2 * axis + 1] = whole[2 * axis] + end - 1;
+      SlabExtent(whole, first, end, extent);
       vtkDataArray* pieceLabels = nullptr;
       std::string error;
       vtkImageData* piece = this->UpdateInputExtent(extent, pieceLabels, error);

@@ -198,7 +198,8 @@ def case_slab_only():
     """A process other than rank 0 reads only the slab of slices its parts need: its file may hold
     anything beyond that slab. Rank 1's parts lie in the top half of a tall image; its file holds a
     non-integer label in the first slice, which it never reads, and the run gives the one-process
-    mesh. The same value in its top slice, which it reads, stops the run."""
+    mesh. The same value in its top slice, which it reads, stops the run; so does a slab beyond
+    its memory limit."""
     tall = np.concatenate([three_labels(), three_labels()], axis=0).astype(np.float32)
     for name in ("tall.nrrd", "tall_gzip.nrrd.gz", "tall.mha"):
         good = write_float_image(path(name), tall)
@@ -221,6 +222,18 @@ def case_slab_only():
                 assert "non-integer value 0.5" in result.stderr and f"(5, 5, {slice_index})" in result.stderr, \
                     result.stderr
         print(f"OK: {name}: process 1 read its slab alone, and refused a bad value in it")
+    # Its memory limit is checked again once its slab is known. A thin column through a tall image
+    # (1,000 slices of 256 x 256) spreads the parts over its height, so process 1's slab is most
+    # of the image (~47 MiB); 75 MiB holds what it needs before that (~37 MiB on starting and the
+    # fixed 25 MiB) but not the slab too. (Without the second check the run would succeed.)
+    _, y, x = np.ogrid[0:1000, 0:256, 0:256]
+    column = np.broadcast_to(((y - 128) ** 2 + (x - 128) ** 2 < 16).astype(np.uint8), (1000, 256, 256))
+    image, out = write_nrrd("column.nrrd", column), path("column.msh")
+    result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q"), ":",
+                  "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q", "--max-memory", "75M")])
+    expect_one_line_failure(result, "process 1 of 2: this run needs about", out)
+    assert "estimated from its slab of" in result.stderr, result.stderr
+    os.remove(image)
 
 
 if __name__ == "__main__":

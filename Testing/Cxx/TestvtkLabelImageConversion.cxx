@@ -140,17 +140,17 @@ TEST(LabelImageConversion, ASlabIsTheConvertedImagesSlicesWhenItConvertsAsIs)
   EXPECT_TRUE(ConvertsAsIs(acrossZ, flat));
 }
 
-TEST(ImageFingerprint, ChangesWithEveryThingThatPlacesOrLabelsTheMesh)
+TEST(ImageFingerprint, ChangesWithEveryThingThatPlacesTheMesh)
 {
   // The processes of a distributed run compare fingerprints: two images that
-  // would mesh differently must not share one.
+  // would place the mesh differently must not share one (their labels are
+  // compared slab by slab, TestStreamedPipeline).
   const auto reference = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
-  const std::string print = ImageFingerprint(reference, reference->GetPointData()->GetScalars());
+  const std::string print = ImageFingerprint(reference);
   const auto same = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
-  EXPECT_EQ(ImageFingerprint(same, same->GetPointData()->GetScalars()), print);
+  EXPECT_EQ(ImageFingerprint(same), print);
 
   const std::function<void(vtkImageData*)> changes[] = {
-    [](vtkImageData* i) { i->GetPointData()->GetScalars()->SetComponent(5, 0, 0); }, // was 2
     [](vtkImageData* i) { i->SetOrigin(0, 0, 1e-9); },
     [](vtkImageData* i) { i->SetSpacing(1, 1, 2); },
     [](vtkImageData* i) { i->SetExtent(1, 4, 0, 2, 0, 1); },
@@ -160,7 +160,7 @@ TEST(ImageFingerprint, ChangesWithEveryThingThatPlacesOrLabelsTheMesh)
   {
     const auto changed = Image<vtkUnsignedCharArray>(4, 3, 2, [](vtkIdType v) { return v % 3; });
     changes[k](changed);
-    EXPECT_NE(ImageFingerprint(changed, changed->GetPointData()->GetScalars()), print) << "change " << k;
+    EXPECT_NE(ImageFingerprint(changed), print) << "change " << k;
   }
 }
 

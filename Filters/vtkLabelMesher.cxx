@@ -409,8 +409,15 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
                << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
                << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
-    const std::string failure = labelmesher::FirstFailure(
-      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input) + parameters.str()));
+    const std::string difference =
+      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input) + parameters.str());
+    // A process whose reader failed has an empty image, which differs from rank 0's too: its
+    // reason is that it has none (the reader's own error is in that process's output).
+    const bool noImage = !slabOnly && input->GetNumberOfPoints() == 0;
+    const std::string failure = labelmesher::FirstFailure(!noImage ? difference
+        : labelmesher::WorldRank() == 0
+        ? "The input image is empty"
+        : "its input image is empty (its reader's error, if it failed, is in that process's output)");
     if (!failure.empty())
     {
       vtkErrorMacro(<< failure << ".");

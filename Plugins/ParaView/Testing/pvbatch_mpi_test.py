@@ -4,8 +4,9 @@ every process reads the image with the plugin's reader, each meshes its parts, r
 them; the output fetched to rank 0 holds the same cells (compared by their corners' positions),
 cells of both processes (cell array Process), and every guarantee measured on it; Label Octree
 Mesher, which does not share its run out, meshes the image once, not once a process. A process given
-another image than rank 0's makes the run refuse, in one error line naming it, with no mesh. A
-process other than rank 0 reads only the slab of the image its parts need.
+another image than rank 0's makes the run refuse, in one error line naming it, with no mesh; so
+does one whose reader fails. A process other than rank 0 reads only the slab of the image its
+parts need.
 
 usage: python3 pvbatch_mpi_test.py PVBATCH PLUGIN IMAGE BLOCK_CELLS WORKDIR
 (PYTHONPATH: ParaView's Python packages, as for pvbatch.)
@@ -71,6 +72,16 @@ assert refused["cells"] == 0, refused
 errors = [line for line in stderr.splitlines() if "ERR|" in line]
 assert errors and all("process 1 of 2: it was given another image" in line for line in errors), stderr
 print("OK: a process given another image is named, no mesh:", errors[0].split("): ", 1)[-1])
+
+# Rank 1's reader fails (its file is missing): its image is empty, and it is named for that, not
+# for another image.
+missing, stderr = run(["mpirun", "-q", "-np", "2", pvbatch, "--symmetric"], "missing",
+                      os.path.join(workdir, "missing.nrrd"))
+assert missing["cells"] == 0, missing
+errors = [line for line in stderr.splitlines() if "vtkLabelMesher" in line and "ERR|" in line]
+assert errors and all("process 1 of 2: its input image is empty" in line for line in errors), stderr
+assert "missing.nrrd': no such file" in stderr, stderr
+print("OK: a process whose reader failed is named for its empty image, no mesh")
 
 # Rank 1 reads only the slab its parts need (through ParaView's post filter): its file holds a
 # non-integer label in the first slice of a tall image, beyond its slab, and the mesh is the one

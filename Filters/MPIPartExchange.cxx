@@ -27,6 +27,7 @@ namespace
 constexpr int kPartTag = 7311;
 constexpr int kNoticeTag = 7312;
 constexpr int kAssignmentTag = 7313;
+constexpr int kOutputPieceTag = 7314;
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
 void Check(int status, const char* what)
@@ -278,6 +279,50 @@ std::string DifferenceFromRankZero(const std::string& fingerprint)
 #endif
   (void)fingerprint;
   return {};
+}
+
+bool ScatterFromRankZero(const std::vector<std::string>& pieces, std::string& mine)
+{
+#ifdef SC_ENABLE_MPI
+  if (WorldSize() > 1)
+  {
+    // Each process's length first (-1: none), then each string in pieces of at most kPiece
+    // bytes (MPI counts are int), sent in rank order while the others wait for theirs.
+    const int size = WorldSize(), rank = WorldRank();
+    std::vector<std::int64_t> lengths(static_cast<std::size_t>(size), -1);
+    if (rank == 0 && pieces.size() == static_cast<std::size_t>(size))
+      for (std::size_t r = 0; r < pieces.size(); ++r)
+        lengths[r] = static_cast<std::int64_t>(pieces[r].size());
+    std::int64_t length = -1;
+    Check(MPI_Scatter(lengths.data(), 1, MPI_INT64_T, &length, 1, MPI_INT64_T, 0, Parts()),
+      "share out the output's pieces");
+    if (length < 0)
+      return false;
+    if (rank == 0)
+    {
+      for (int r = 1; r < size; ++r)
+      {
+        const std::string& bytes = pieces[static_cast<std::size_t>(r)];
+        for (std::size_t at = 0; at < bytes.size(); at += kPiece)
+          Check(MPI_Send(bytes.data() + at, static_cast<int>(std::min(kPiece, bytes.size() - at)), MPI_CHAR, r,
+                  kOutputPieceTag, Parts()),
+            "send a process its piece of the output");
+      }
+      mine = pieces.front();
+      return true;
+    }
+    mine.assign(static_cast<std::size_t>(length), '\0');
+    for (std::size_t at = 0; at < mine.size(); at += kPiece)
+      Check(MPI_Recv(mine.data() + at, static_cast<int>(std::min(kPiece, mine.size() - at)), MPI_CHAR, 0,
+              kOutputPieceTag, Parts(), MPI_STATUS_IGNORE),
+        "receive this process's piece of the output");
+    return true;
+  }
+#endif
+  if (pieces.empty())
+    return false;
+  mine = pieces.front();
+  return true;
 }
 
 std::unique_ptr<PartExchange> WorldPartExchange()

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace labelmesher
 {
@@ -42,6 +43,12 @@ std::string FirstFailure(const std::string& failure);
 /// Collective over the world's processes: "" when `fingerprint` (what decides the
 /// mesh: the image and the parameters) is rank 0's, else a reason. One process: "".
 std::string DifferenceFromRankZero(const std::string& fingerprint);
+
+/// Collective over the world's processes: rank 0 passes one byte string per
+/// process, its own first (or none, when it has nothing to hand out), the
+/// others pass none; each process gets its string, or false when rank 0 passed
+/// none. One process: its own string, if it passed one.
+bool ScatterFromRankZero(const std::vector<std::string>& pieces, std::string& mine);
 
 /// An exchange between the world's processes when there are several, else
 /// null (one process needs none).

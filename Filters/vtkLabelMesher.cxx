@@ -10,6 +10,7 @@
 #include "MPIStartup.h"
 #include "Streaming/PartExchange.h"
 #include "LabelImageConversion.h"
+#include "OutputPieces.h"
 #include "LabelMesherArrayNames.h"
 #include "MemoryBudget.h"
 #include "Mesh/MeshSelection.h"
@@ -451,12 +452,67 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     output->Initialize();
     interfaces->Initialize();
   }
+  if (this->SharesOutAcrossProcesses())
+  {
+    this->HandOutPieces(outputVector->GetInformationObject(0), output);
+  }
   this->SetProgressText(nullptr);
   if (!this->GetAbortExecute())
   {
     this->UpdateProgress(1.0); // a stopped run's progress stays where it stopped
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLabelMesher::HandOutPieces(vtkInformation* outputInformation, vtkUnstructuredGrid* output)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  const int ranks = labelmesher::WorldSize(), rank = labelmesher::WorldRank();
+  // Rank 0 decides for all: the others take part in the same collective step whatever they asked.
+  const bool piecesAsked = outputInformation->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) == ranks &&
+    outputInformation->Get(SDDP::UPDATE_PIECE_NUMBER()) == rank;
+  std::vector<std::string> pieces;
+  vtkSmartPointer<vtkUnstructuredGrid> own;
+  vtkDataArray* process = output->GetCellData()->GetArray(arrays::Process);
+  if (rank == 0 && piecesAsked && process)
+  {
+    std::vector<int> pieceOfCell(static_cast<std::size_t>(output->GetNumberOfCells()));
+    for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+    {
+      pieceOfCell[static_cast<std::size_t>(c)] = static_cast<int>(process->GetComponent(c, 0));
+    }
+    own = labelmesher::MeshPiece(output, pieceOfCell, 0);
+    pieces.emplace_back(); // rank 0 keeps its own
+    for (int r = 1; r < ranks; ++r)
+    {
+      pieces.push_back(labelmesher::MeshBytes(labelmesher::MeshPiece(output, pieceOfCell, r)));
+    }
+  }
+  std::string mine;
+  bool handedOut = false;
+  try
+  {
+    handedOut = labelmesher::ScatterFromRankZero(pieces, mine);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Handing out the output's pieces failed: " << e.what() << ".");
+    return;
+  }
+  if (!handedOut)
+  {
+    return; // rank 0 holds the whole mesh (or none, having failed), the others none
+  }
+  if (rank == 0)
+  {
+    output->ShallowCopy(own);
+  }
+  else if (!labelmesher::MeshFromBytes(mine, output))
+  {
+    output->Initialize();
+    vtkErrorMacro("This process's piece of the output came from process 0 unreadable.");
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -224,9 +224,12 @@ public:
   /**
    * Share the run out over MPI's processes when MPI runs with more than one
    * (mpirun, started by the application): every process must be given the
-   * same image and parameters; each meshes its parts, and rank 0's
-   * output is the mesh, the same as one process makes; the other processes'
-   * outputs are empty. A process that fails makes rank 0 fail with its rank and
+   * same image and parameters; each meshes its parts, and rank 0 joins them
+   * into the mesh one process makes. When the pipeline asks each process for
+   * its own piece (piece `rank` of as many as there are processes, as
+   * ParaView's does), each process's output is the cells it meshed (cell array
+   * Process) with the run's field data; otherwise rank 0's output is the
+   * whole mesh and the others' are empty. A process that fails makes rank 0 fail with its rank and
    * reason; every process's image geometry and parameters are compared with
    * rank 0's first, and the labels of each slab a process meshes with rank 0's.
    * Rank 0 asks its input for the whole image. Another process whose input can
@@ -374,6 +377,12 @@ private:
   /// labels in it (null when there are none), and the producer's first error (empty if none).
   vtkImageData* UpdateInputExtent(const int extent[6], vtkDataArray*& labels, std::string& problem);
   bool MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share);
+  /// Collective, when SharesOutAcrossProcesses: if the pipeline asks each process for its own
+  /// piece (piece `rank` of as many as there are processes: pvbatch, ParaView's server), rank 0
+  /// keeps the cells it meshed and hands each other process the cells that process meshed
+  /// (cell array Process), each with the whole run's field data. Otherwise rank 0 keeps the
+  /// whole mesh and the others none.
+  void HandOutPieces(vtkInformation* outputInformation, vtkUnstructuredGrid* output);
   /// False when stopped on request before the curver made its mesh.
   bool CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start);
 

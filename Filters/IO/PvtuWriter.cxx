@@ -5,15 +5,13 @@
 #include "PvtuWriter.h"
 
 #include "LabelMesherArrayNames.h"
+#include "OutputPieces.h"
 #include "SafeFile.h"
 #include "VtkFileWriters.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLPUnstructuredGridWriter.h"
@@ -80,63 +78,13 @@ std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh)
   return piece;
 }
 
-/// The cells of `mesh` whose piece is `which`, with the points they use (in their order), and
-/// every array. (vtkExtractCells does the same, but its module brings VTK's parallel DIY and MPI
-/// libraries into every program that writes a mesh: their address space alone made a run under
-/// `ulimit -v` 100 MiB abort in ITK's thread pool instead of being refused in one line.)
-vtkSmartPointer<vtkUnstructuredGrid> Piece(vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which)
-{
-  auto piece = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  std::vector<vtkIdType> pointOf(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
-  std::vector<vtkIdType> usedPoints, cells;
-  vtkNew<vtkIdList> ids;
-  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
-  {
-    if (pieceOfCell[c] != which)
-      continue;
-    cells.push_back(static_cast<vtkIdType>(c));
-    mesh->GetCellPoints(static_cast<vtkIdType>(c), ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-    {
-      vtkIdType& id = pointOf[static_cast<std::size_t>(ids->GetId(k))];
-      if (id < 0)
-      {
-        id = static_cast<vtkIdType>(usedPoints.size());
-        usedPoints.push_back(ids->GetId(k));
-      }
-    }
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataType(mesh->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(static_cast<vtkIdType>(usedPoints.size()));
-  piece->GetPointData()->CopyAllocate(mesh->GetPointData(), static_cast<vtkIdType>(usedPoints.size()));
-  for (std::size_t p = 0; p < usedPoints.size(); ++p)
-  {
-    points->SetPoint(static_cast<vtkIdType>(p), mesh->GetPoint(usedPoints[p]));
-    piece->GetPointData()->CopyData(mesh->GetPointData(), usedPoints[p], static_cast<vtkIdType>(p));
-  }
-  piece->SetPoints(points);
-  piece->Allocate(static_cast<vtkIdType>(cells.size()));
-  piece->GetCellData()->CopyAllocate(mesh->GetCellData(), static_cast<vtkIdType>(cells.size()));
-  for (std::size_t c = 0; c < cells.size(); ++c)
-  {
-    mesh->GetCellPoints(cells[c], ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      ids->SetId(k, pointOf[static_cast<std::size_t>(ids->GetId(k))]);
-    piece->InsertNextCell(mesh->GetCellType(cells[c]), ids);
-    piece->GetCellData()->CopyData(mesh->GetCellData(), cells[c], static_cast<vtkIdType>(c));
-  }
-  piece->SetFieldData(mesh->GetFieldData()); // the material table, run fields: each piece reads alone
-  return piece;
-}
-
 /// VTK's summary for `pieces` pieces of `mesh` named after `path`, as text.
 std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int pieces)
 {
   // The summary lists the arrays of its input and a piece for each piece VTK writes beside it
   // (none for an empty one): its input is the mesh's first cell, every piece that cell, all
   // thrown away with the scratch folder.
-  const vtkSmartPointer<vtkUnstructuredGrid> sample = Piece(mesh, std::vector<int>(1, 0), 0);
+  const vtkSmartPointer<vtkUnstructuredGrid> sample = MeshPiece(mesh, std::vector<int>(1, 0), 0);
   const ScratchFolder scratch;
   const fs::path summary = scratch.Path / fs::path(path).filename();
   vtkNew<vtkXMLPUnstructuredGridWriter> writer;
@@ -270,7 +218,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
     for (int p = 0; p < pieces; ++p)
     {
       std::ostringstream bytes;
-      WriteVtu(Piece(mesh, pieceOfCell, p), bytes);
+      WriteVtu(MeshPiece(mesh, pieceOfCell, p), bytes);
       files.push_back(Written((folder / sources[static_cast<std::size_t>(p)]).string(), bytes.str()));
     }
     files.push_back(Written(path, summary));

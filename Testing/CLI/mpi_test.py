@@ -229,6 +229,8 @@ def case_slab_only():
     _, y, x = np.ogrid[0:1000, 0:256, 0:256]
     column = np.broadcast_to(((y - 128) ** 2 + (x - 128) ** 2 < 16).astype(np.uint8), (1000, 256, 256))
     image, out = write_nrrd("column.nrrd", column), path("column.msh")
+    if os.path.exists(out):
+        os.remove(out)
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q"), ":",
                   "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q", "--max-memory", "75M")])
     expect_one_line_failure(result, "process 1 of 2: this run needs about", out)

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""pvbatch: Label Mesher on a label image read by the plugin's reader on every process, its
-output fetched to rank 0 (all processes' pieces appended), summed up as JSON for
-pvbatch_mpi_test.py to compare between one process and several.
+"""pvbatch: Label Mesher on a label image read by the plugin's reader on every process, each
+process's piece of its output fetched to rank 0 and appended there, and written as a .pvtu by
+ParaView's parallel writer, summed up as JSON for pvbatch_mpi_test.py to compare between one
+process and several.
 
 usage: [mpirun -np N] pvbatch [--no-mpi] pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json
        mpirun -np N pvbatch --symmetric pvbatch_distributed.py PLUGIN IMAGE BLOCK_CELLS OUT.json OTHER
@@ -13,8 +14,10 @@ import json
 import sys
 
 from paraview import servermanager
-from paraview.simple import LoadPlugin
+from paraview.simple import LoadPlugin, SaveData
 from paraview.vtk.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader
 
 plugin, image_path, block_cells, out_path = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
 rank = servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
@@ -27,7 +30,26 @@ reader.UpdatePipeline()
 mesher = LabelMesher(Input=reader, BlockCells=block_cells)  # noqa: F821 (Distributed: on by default)
 mesher.Labels = ["POINTS", "Labels"]
 mesher.UpdatePipeline()
-mesh = servermanager.Fetch(mesher)
+# Each process holds the cells it meshed, every piece with the run's fields: the pieces are
+# fetched one by one (this ParaView's Fetch appends only rank 0's) and appended here.
+processes = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+pieces = [servermanager.Fetch(mesher, r) for r in range(processes)]
+append = vtkAppendFilter()
+for piece in pieces:
+    append.AddInputData(piece)
+append.Update()
+mesh, first = append.GetOutput(), pieces[0]
+piece_processes = [sorted(set(vtk_to_numpy(p.GetCellData().GetArray("Process")).tolist()))
+                   if p.GetNumberOfCells() and p.GetCellData().GetArray("Process") else [] for p in pieces]
+pvtu = None
+if len(sys.argv) == 5 and mesh.GetNumberOfCells() > 0:
+    # ParaView's parallel writer, one .vtu piece a process, read back whole.
+    SaveData(out_path + ".pvtu", proxy=mesher)
+    if rank == 0:
+        written = vtkXMLPUnstructuredGridReader()
+        written.SetFileName(out_path + ".pvtu")
+        written.Update()
+        pvtu = {"pieces": written.GetNumberOfPieces(), "cells": written.GetOutput().GetNumberOfCells()}
 # A filter that does not share its run out meshes the whole image once (for piece 0), not once a
 # process.
 initial = LabelOctreeMesher(Input=reader)  # noqa: F821
@@ -37,7 +59,7 @@ initial_cells = servermanager.Fetch(initial).GetNumberOfCells()
 
 
 def field(name):
-    array = mesh.GetFieldData().GetArray(name)
+    array = first.GetFieldData().GetArray(name)
     return None if array is None else [array.GetTuple1(i) for i in range(array.GetNumberOfTuples())]
 
 
@@ -56,6 +78,9 @@ def summary():
         "initial_cells": initial_cells,
         "cells_sha256": hashlib.sha256(repr(cells).encode()).hexdigest(),
         "processes_field": field("Processes"),
+        "piece_cells": [p.GetNumberOfCells() for p in pieces],
+        "piece_processes": piece_processes,
+        "pvtu": pvtu,
         "process_values": sorted(set(vtk_to_numpy(process).tolist())) if process is not None else None,
         "minimum_angle": field("MinimumAngle"),
         "angle_bound": field("AngleBound"),

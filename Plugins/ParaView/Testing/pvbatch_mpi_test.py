@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Label Mesher in pvbatch under `mpirun -np 2` gives the same mesh as in one pvbatch process:
 every process reads the image with the plugin's reader, each meshes its parts, rank 0 joins
-them; the output fetched to rank 0 holds the same cells (compared by their corners' positions),
-cells of both processes (cell array Process), and every guarantee measured on it; Label Octree
+them and hands each process the cells it meshed (cell array Process); the pieces fetched to
+rank 0 hold the same cells (compared by their corners' positions), each piece its own process's
+cells, every guarantee measured on the whole, and ParaView's parallel writer writes one .pvtu
+piece a process; Label Octree
 Mesher, which does not share its run out, meshes the image once, not once a process. A process given
 another image than rank 0's makes the run refuse, in one error line naming it, with no mesh; so
 does one whose reader fails. A process other than rank 0 reads only the slab of the image its
@@ -46,6 +48,12 @@ assert two["processes_field"] == [2.0], f"the run was not shared out: {two}"
 assert two["process_values"] == [0, 1], f"not both processes meshed cells: {two['process_values']}"
 assert (two["cells"], two["cells_sha256"]) == (one["cells"], one["cells_sha256"]), \
     "two processes gave another mesh than one"
+# Each process holds the cells it meshed (a parallel pipeline asks each for its piece), and
+# ParaView's parallel writer writes one piece a process.
+assert two["piece_processes"] == [[0], [1]] and min(two["piece_cells"]) > 0, \
+    f"each process does not hold its own piece: {two['piece_processes']}, {two['piece_cells']} cells"
+assert two["pvtu"] == {"pieces": 2, "cells": one["cells"]} and one["pvtu"] == {"pieces": 1, "cells": one["cells"]}, \
+    (one["pvtu"], two["pvtu"])
 assert two["initial_cells"] == one["initial_cells"] > 0, \
     f"Label Octree Mesher on two processes: {two['initial_cells']} cells, on one {one['initial_cells']}"
 for summary in (one, two):

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// A piece copies its cells and points by hand: vtkExtractCells does the same, but its module
+// brings VTK's parallel DIY and MPI libraries into every program that writes a mesh (their
+// address space alone made a run under `ulimit -v` 100 MiB abort in ITK's thread pool instead
+// of being refused in one line).
+#include "OutputPieces.h"
+
+#include "VTKMessages.h"
+
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridReader.h"
+#include "vtkUnstructuredGridWriter.h"
+
+namespace labelmesher
+{
+
+vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(
+  vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which)
+{
+  auto piece = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  std::vector<vtkIdType> pointOf(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
+  std::vector<vtkIdType> usedPoints, cells;
+  vtkNew<vtkIdList> ids;
+  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
+  {
+    if (pieceOfCell[c] != which)
+      continue;
+    cells.push_back(static_cast<vtkIdType>(c));
+    mesh->GetCellPoints(static_cast<vtkIdType>(c), ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      vtkIdType& id = pointOf[static_cast<std::size_t>(ids->GetId(k))];
+      if (id < 0)
+      {
+        id = static_cast<vtkIdType>(usedPoints.size());
+        usedPoints.push_back(ids->GetId(k));
+      }
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints() ? mesh->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(static_cast<vtkIdType>(usedPoints.size()));
+  piece->GetPointData()->CopyAllocate(mesh->GetPointData(), static_cast<vtkIdType>(usedPoints.size()));
+  for (std::size_t p = 0; p < usedPoints.size(); ++p)
+  {
+    points->SetPoint(static_cast<vtkIdType>(p), mesh->GetPoint(usedPoints[p]));
+    piece->GetPointData()->CopyData(mesh->GetPointData(), usedPoints[p], static_cast<vtkIdType>(p));
+  }
+  piece->SetPoints(points);
+  piece->Allocate(static_cast<vtkIdType>(cells.size()));
+  piece->GetCellData()->CopyAllocate(mesh->GetCellData(), static_cast<vtkIdType>(cells.size()));
+  for (std::size_t c = 0; c < cells.size(); ++c)
+  {
+    mesh->GetCellPoints(cells[c], ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      ids->SetId(k, pointOf[static_cast<std::size_t>(ids->GetId(k))]);
+    piece->InsertNextCell(mesh->GetCellType(cells[c]), ids);
+    piece->GetCellData()->CopyData(mesh->GetCellData(), cells[c], static_cast<vtkIdType>(c));
+  }
+  piece->GetFieldData()->ShallowCopy(mesh->GetFieldData()); // the material table, the run's fields
+  return piece;
+}
+
+std::string MeshBytes(vtkUnstructuredGrid* mesh)
+{
+  vtkNew<vtkUnstructuredGridWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileTypeToBinary();
+  writer->WriteToOutputStringOn();
+  if (!writer->Write())
+    return {};
+  return std::string(writer->GetOutputString(), static_cast<std::size_t>(writer->GetOutputStringLength()));
+}
+
+bool MeshFromBytes(const std::string& bytes, vtkUnstructuredGrid* mesh)
+{
+  vtkNew<vtkUnstructuredGridReader> reader;
+  reader->ReadFromInputStringOn();
+  reader->SetBinaryInputString(bytes.data(), static_cast<int>(bytes.size()));
+  reader->ReadAllScalarsOn();
+  reader->ReadAllVectorsOn();
+  reader->ReadAllNormalsOn();
+  reader->ReadAllTensorsOn();
+  reader->ReadAllColorScalarsOn();
+  reader->ReadAllTCoordsOn();
+  reader->ReadAllFieldsOn();
+  // Cut or damaged bytes make the reader complain but not always fail: any complaint refuses.
+  const VTKMessages errors(reader, vtkCommand::ErrorEvent);
+  const VTKMessages executiveErrors(reader->GetExecutive(), vtkCommand::ErrorEvent);
+  reader->Update();
+  vtkUnstructuredGrid* read = reader->GetOutput();
+  if (reader->GetErrorCode() != 0 || read == nullptr || !errors.First().empty() || !executiveErrors.First().empty())
+    return false;
+  mesh->ShallowCopy(read);
+  return true;
+}
+
+} // namespace labelmesher

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#ifndef labelmesher_OutputPieces_h
+#define labelmesher_OutputPieces_h
+
+/**
+ * @file OutputPieces.h
+ * A mesh cut into the pieces its processes meshed (cell array "Process"), and
+ * a piece as bytes to send to its process: vtkLabelMesher hands each process
+ * its piece when a parallel pipeline asks every process for one (pvbatch,
+ * ParaView's server), and a .pvtu is written one piece per process
+ * (IO/PvtuWriter.h). Not installed.
+ */
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+namespace labelmesher
+{
+
+/// The cells of `mesh` whose entry of `pieceOfCell` (one per cell) is `which`,
+/// with the points they use (in the order cells first use them), every point
+/// and cell array, and the mesh's field data (each piece reads alone).
+vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(
+  vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which);
+
+/// `mesh` as bytes (VTK's legacy format, binary: every value exact), and back.
+/// MeshFromBytes returns false for bytes that are not a mesh.
+std::string MeshBytes(vtkUnstructuredGrid* mesh);
+bool MeshFromBytes(const std::string& bytes, vtkUnstructuredGrid* mesh);
+
+} // namespace labelmesher
+
+#endif

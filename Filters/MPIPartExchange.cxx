@@ -14,6 +14,7 @@
 #include <deque>
 #include <initializer_list>
 #include <stdexcept>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ constexpr int kPartTag = 7311;
 constexpr int kNoticeTag = 7312;
 constexpr int kAssignmentTag = 7313;
 constexpr int kOutputPieceTag = 7314;
+/// An output piece travels in messages of this many bytes at most: small enough that a process
+/// with no memory for its piece can still take and drop each (ReceivePieceFromRankZero).
+constexpr std::size_t kOutputChunk = std::size_t(64) << 20;
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
 void Check(int status, const char* what)
@@ -281,48 +285,55 @@ std::string DifferenceFromRankZero(const std::string& fingerprint)
   return {};
 }
 
-bool ScatterFromRankZero(const std::vector<std::string>& pieces, std::string& mine)
+void SendPieceTo(int rank, const std::string* bytes)
 {
 #ifdef SC_ENABLE_MPI
-  if (WorldSize() > 1)
-  {
-    // Each process's length first (-1: none), then each string in pieces of at most kPiece
-    // bytes (MPI counts are int), sent in rank order while the others wait for theirs.
-    const int size = WorldSize(), rank = WorldRank();
-    std::vector<std::int64_t> lengths(static_cast<std::size_t>(size), -1);
-    if (rank == 0 && pieces.size() == static_cast<std::size_t>(size))
-      for (std::size_t r = 0; r < pieces.size(); ++r)
-        lengths[r] = static_cast<std::int64_t>(pieces[r].size());
-    std::int64_t length = -1;
-    Check(MPI_Scatter(lengths.data(), 1, MPI_INT64_T, &length, 1, MPI_INT64_T, 0, Parts()),
-      "share out the output's pieces");
-    if (length < 0)
-      return false;
-    if (rank == 0)
-    {
-      for (int r = 1; r < size; ++r)
-      {
-        const std::string& bytes = pieces[static_cast<std::size_t>(r)];
-        for (std::size_t at = 0; at < bytes.size(); at += kPiece)
-          Check(MPI_Send(bytes.data() + at, static_cast<int>(std::min(kPiece, bytes.size() - at)), MPI_CHAR, r,
-                  kOutputPieceTag, Parts()),
-            "send a process its piece of the output");
-      }
-      mine = pieces.front();
-      return true;
-    }
-    mine.assign(static_cast<std::size_t>(length), '\0');
-    for (std::size_t at = 0; at < mine.size(); at += kPiece)
-      Check(MPI_Recv(mine.data() + at, static_cast<int>(std::min(kPiece, mine.size() - at)), MPI_CHAR, 0,
-              kOutputPieceTag, Parts(), MPI_STATUS_IGNORE),
-        "receive this process's piece of the output");
-    return true;
-  }
+  // Its length (-1: none), then chunks of at most kOutputChunk bytes.
+  const std::int64_t length = bytes ? static_cast<std::int64_t>(bytes->size()) : -1;
+  Check(MPI_Send(&length, 1, MPI_INT64_T, rank, kOutputPieceTag, Parts()), "send a process its piece of the output");
+  for (std::size_t at = 0; bytes && at < bytes->size(); at += kOutputChunk)
+    Check(MPI_Send(bytes->data() + at, static_cast<int>(std::min(kOutputChunk, bytes->size() - at)), MPI_BYTE, rank,
+            kOutputPieceTag, Parts()),
+      "send a process its piece of the output");
+#else
+  (void)rank;
+  (void)bytes;
 #endif
-  if (pieces.empty())
+}
+
+bool ReceivePieceFromRankZero(std::string& bytes, std::string& problem)
+{
+  problem.clear();
+#ifdef SC_ENABLE_MPI
+  std::int64_t length = -1;
+  Check(MPI_Recv(&length, 1, MPI_INT64_T, 0, kOutputPieceTag, Parts(), MPI_STATUS_IGNORE),
+    "receive this process's piece of the output");
+  if (length < 0)
     return false;
-  mine = pieces.front();
-  return true;
+  const auto size = static_cast<std::size_t>(length);
+  std::string dropped; // where a piece too large to hold goes, a chunk at a time
+  try
+  {
+    bytes.assign(size, '\0');
+  }
+  catch (const std::bad_alloc&)
+  {
+    bytes.clear();
+    problem = "it had no memory for its piece of the output (" + std::to_string(size) + " bytes)";
+    dropped.assign(std::min(size, kOutputChunk), '\0');
+  }
+  for (std::size_t at = 0; at < size; at += kOutputChunk)
+  {
+    char* into = problem.empty() ? bytes.data() + at : dropped.data();
+    Check(MPI_Recv(into, static_cast<int>(std::min(kOutputChunk, size - at)), MPI_BYTE, 0, kOutputPieceTag, Parts(),
+            MPI_STATUS_IGNORE),
+      "receive this process's piece of the output");
+  }
+  return problem.empty();
+#else
+  (void)bytes;
+  return false;
+#endif
 }
 
 std::unique_ptr<PartExchange> WorldPartExchange()

@@ -44,11 +44,16 @@ std::string FirstFailure(const std::string& failure);
 /// mesh: the image and the parameters) is rank 0's, else a reason. One process: "".
 std::string DifferenceFromRankZero(const std::string& fingerprint);
 
-/// Collective over the world's processes: rank 0 passes one byte string per
-/// process, its own first (or none, when it has nothing to hand out), the
-/// others pass none; each process gets its string, or false when rank 0 passed
-/// none. One process: its own string, if it passed one.
-bool ScatterFromRankZero(const std::vector<std::string>& pieces, std::string& mine);
+/// Rank 0 of the world's processes: sends process `rank` its piece of the
+/// output, or none (null). Point to point: that process must be in
+/// ReceivePieceFromRankZero. Throws std::runtime_error when MPI fails.
+void SendPieceTo(int rank, const std::string* bytes);
+
+/// A process other than rank 0: its piece of the output from rank 0 into
+/// `bytes`; false when rank 0 sent none. A piece it cannot hold (no memory) is
+/// still taken, and dropped, so that rank 0 does not wait for ever: then it
+/// returns false with `problem` saying so.
+bool ReceivePieceFromRankZero(std::string& bytes, std::string& problem);
 
 /// An exchange between the world's processes when there are several, else
 /// null (one process needs none).

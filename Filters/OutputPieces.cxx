@@ -8,6 +8,7 @@
 #include "VTKMessages.h"
 
 #include "vtkCellData.h"
+#include "vtkCharArray.h"
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
@@ -19,22 +20,29 @@
 #include "vtkUnstructuredGridReader.h"
 #include "vtkUnstructuredGridWriter.h"
 
+#include <algorithm>
+
 namespace labelmesher
 {
 
-vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(
-  vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which)
+std::vector<std::vector<vtkIdType>> CellsOfPieces(const std::vector<int>& pieceOfCell, int pieces)
+{
+  std::vector<std::vector<vtkIdType>> cells(static_cast<std::size_t>(std::max(pieces, 0)));
+  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
+    if (pieceOfCell[c] >= 0 && pieceOfCell[c] < pieces)
+      cells[static_cast<std::size_t>(pieceOfCell[c])].push_back(static_cast<vtkIdType>(c));
+  return cells;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& cells)
 {
   auto piece = vtkSmartPointer<vtkUnstructuredGrid>::New();
   std::vector<vtkIdType> pointOf(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
-  std::vector<vtkIdType> usedPoints, cells;
+  std::vector<vtkIdType> usedPoints;
   vtkNew<vtkIdList> ids;
-  for (std::size_t c = 0; c < pieceOfCell.size(); ++c)
+  for (const vtkIdType c : cells)
   {
-    if (pieceOfCell[c] != which)
-      continue;
-    cells.push_back(static_cast<vtkIdType>(c));
-    mesh->GetCellPoints(static_cast<vtkIdType>(c), ids);
+    mesh->GetCellPoints(c, ids);
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
       vtkIdType& id = pointOf[static_cast<std::size_t>(ids->GetId(k))];
@@ -75,16 +83,21 @@ std::string MeshBytes(vtkUnstructuredGrid* mesh)
   writer->SetInputData(mesh);
   writer->SetFileTypeToBinary();
   writer->WriteToOutputStringOn();
-  if (!writer->Write())
+  const VTKMessages errors(writer, vtkCommand::ErrorEvent);
+  if (!writer->Write() || !errors.First().empty())
     return {};
-  return std::string(writer->GetOutputString(), static_cast<std::size_t>(writer->GetOutputStringLength()));
+  return writer->GetOutputStdString();
 }
 
 bool MeshFromBytes(const std::string& bytes, vtkUnstructuredGrid* mesh)
 {
+  // The bytes as the reader's input array, not copied (its length is a vtkIdType: the string
+  // input's is an int).
+  vtkNew<vtkCharArray> input;
+  input->SetArray(const_cast<char*>(bytes.data()), static_cast<vtkIdType>(bytes.size()), /*save=*/1);
   vtkNew<vtkUnstructuredGridReader> reader;
   reader->ReadFromInputStringOn();
-  reader->SetBinaryInputString(bytes.data(), static_cast<int>(bytes.size()));
+  reader->SetInputArray(input);
   reader->ReadAllScalarsOn();
   reader->ReadAllVectorsOn();
   reader->ReadAllNormalsOn();
@@ -97,7 +110,8 @@ bool MeshFromBytes(const std::string& bytes, vtkUnstructuredGrid* mesh)
   const VTKMessages executiveErrors(reader->GetExecutive(), vtkCommand::ErrorEvent);
   reader->Update();
   vtkUnstructuredGrid* read = reader->GetOutput();
-  if (reader->GetErrorCode() != 0 || read == nullptr || !errors.First().empty() || !executiveErrors.First().empty())
+  if (bytes.empty() || reader->GetErrorCode() != 0 || read == nullptr || !errors.First().empty() ||
+    !executiveErrors.First().empty())
     return false;
   mesh->ShallowCopy(read);
   return true;

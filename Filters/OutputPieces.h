@@ -12,6 +12,7 @@
  */
 
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 
 #include <string>
 #include <vector>
@@ -21,14 +22,19 @@ class vtkUnstructuredGrid;
 namespace labelmesher
 {
 
-/// The cells of `mesh` whose entry of `pieceOfCell` (one per cell) is `which`,
-/// with the points they use (in the order cells first use them), every point
-/// and cell array, and the mesh's field data (each piece reads alone).
-vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(
-  vtkUnstructuredGrid* mesh, const std::vector<int>& pieceOfCell, int which);
+/// The cells of each of `pieces` pieces, by `pieceOfCell` (one entry a cell);
+/// an entry outside [0, pieces) is in none.
+std::vector<std::vector<vtkIdType>> CellsOfPieces(const std::vector<int>& pieceOfCell, int pieces);
 
-/// `mesh` as bytes (VTK's legacy format, binary: every value exact), and back.
-/// MeshFromBytes returns false for bytes that are not a mesh.
+/// The cells `cells` of `mesh`, with the points they use (in the order cells
+/// first use them), every point and cell array, and the mesh's field data
+/// (each piece reads alone; the piece's own field data object, holding the
+/// same arrays).
+vtkSmartPointer<vtkUnstructuredGrid> MeshPiece(vtkUnstructuredGrid* mesh, const std::vector<vtkIdType>& cells);
+
+/// `mesh` as bytes (VTK's legacy format, binary: every value exact; "" when
+/// VTK's writer fails), and back. MeshFromBytes returns false for bytes that
+/// are not a whole mesh (cut, damaged).
 std::string MeshBytes(vtkUnstructuredGrid* mesh);
 bool MeshFromBytes(const std::string& bytes, vtkUnstructuredGrid* mesh);
 

@@ -382,7 +382,15 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   // A process that reads only its slab has no voxels yet: the image's geometry stands in for it
   // until its slab is read (MeshAndDecimate).
   vtkInformation* inputInformation = inputVector[0]->GetInformationObject(0);
+  // Decided once: meshing starts MPI when the application has not (MeshAndDecimate).
+  const bool shares = this->SharesOutAcrossProcesses();
   const bool slabOnly = this->ReadsItsSlabOnly(inputInformation);
+  // A parallel pipeline (ParaView's) asks each process for its own piece: each then gets the
+  // cells of the parts it meshed (HandOutPieces).
+  vtkInformation* outputInformation = outputVector->GetInformationObject(0);
+  const bool handsOutPieces = shares &&
+    outputInformation->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == labelmesher::WorldSize() &&
+    outputInformation->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == labelmesher::WorldRank();
   vtkNew<vtkImageData> geometry;
   if (slabOnly)
   {
@@ -399,7 +407,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     geometry->GetFieldData()->ShallowCopy(input->GetFieldData());
     input = geometry;
   }
-  if (this->SharesOutAcrossProcesses())
+  if (shares)
   {
     // Every process must mesh the same (rank 0 joins their parts: parts of different images or
     // parameters make no mesh), checked before anything that could stop one process and not
@@ -409,16 +417,20 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     parameters.precision(17);
     parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
                << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
-               << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
+               << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve // not MemoryLimit: each process's own
+               << (handsOutPieces ? " pieces" : " whole"); // so that all or none take HandOutPieces' steps
     const std::string difference =
       labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input) + parameters.str());
     // A process whose reader failed has an empty image, which differs from rank 0's too: its
     // reason is that it has none (the reader's own error is in that process's output).
-    const bool noImage = !slabOnly && input->GetNumberOfPoints() == 0;
-    const std::string failure = labelmesher::FirstFailure(!noImage ? difference
-        : labelmesher::WorldRank() == 0
+    std::string problem = difference;
+    if (!slabOnly && input->GetNumberOfPoints() == 0)
+    {
+      problem = labelmesher::WorldRank() == 0
         ? "The input image is empty"
-        : "its input image is empty (its reader's error, if it failed, is in that process's output)");
+        : "its input image is empty (its reader's error, if it failed, is in that process's output)";
+    }
+    const std::string failure = labelmesher::FirstFailure(problem);
     if (!failure.empty())
     {
       vtkErrorMacro(<< failure << ".");
@@ -441,20 +453,34 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   const bool curve = this->Curve || (this->Order == 2 && GetImageDimension(input) == 2);
   const double meshWeight = this->Decimate ? kMeshAndDecimateWeight : kMeshWeight;
   const double meshShare = meshWeight / (meshWeight + (curve ? kCurveWeight : 0.0));
-  const bool meshed = this->Decimate
-    ? this->MeshAndDecimate(
-        input, this->GetInputArrayToProcess(0, inputVector), slabOnly, output, interfaces, curved, meshShare)
-    : this->MeshOnly(input, output, interfaces, meshShare);
-  if (meshed && curve && !this->CurveMesh(input, output, curved, meshShare))
+  try
   {
-    // Stopped or failed while curving: the run is not done, and a linear mesh alone is not what
-    // was asked for.
+    const bool meshed = this->Decimate
+      ? this->MeshAndDecimate(
+          input, this->GetInputArrayToProcess(0, inputVector), slabOnly, output, interfaces, curved, meshShare)
+      : this->MeshOnly(input, output, interfaces, meshShare);
+    if (meshed && curve && !this->CurveMesh(input, output, curved, meshShare))
+    {
+      // Stopped or failed while curving: the run is not done, and a linear mesh alone is not what
+      // was asked for.
+      output->Initialize();
+      interfaces->Initialize();
+    }
+  }
+  catch (const std::exception& e)
+  {
+    if (!handsOutPieces)
+    {
+      throw;
+    }
+    // The other processes wait for their pieces: they get none, and this process says why.
     output->Initialize();
     interfaces->Initialize();
+    vtkErrorMacro("Meshing failed: " << e.what() << ".");
   }
-  if (this->SharesOutAcrossProcesses())
+  if (handsOutPieces)
   {
-    this->HandOutPieces(outputVector->GetInformationObject(0), output);
+    this->HandOutPieces(output);
   }
   this->SetProgressText(nullptr);
   if (!this->GetAbortExecute())
@@ -465,53 +491,88 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
 }
 
 //------------------------------------------------------------------------------
-void vtkLabelMesher::HandOutPieces(vtkInformation* outputInformation, vtkUnstructuredGrid* output)
+void vtkLabelMesher::HandOutPieces(vtkUnstructuredGrid* output)
 {
-  using SDDP = vtkStreamingDemandDrivenPipeline;
+  // Rank 0 sends every other process its piece, one at a time (only one piece's bytes are held
+  // at once), then keeps its own; any failure on any process leaves every output empty (a piece
+  // missing would be a mesh silently wrong), named on every process.
   const int ranks = labelmesher::WorldSize(), rank = labelmesher::WorldRank();
-  // Rank 0 decides for all: the others take part in the same collective step whatever they asked.
-  const bool piecesAsked = outputInformation->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) == ranks &&
-    outputInformation->Get(SDDP::UPDATE_PIECE_NUMBER()) == rank;
-  std::vector<std::string> pieces;
-  vtkSmartPointer<vtkUnstructuredGrid> own;
-  vtkDataArray* process = output->GetCellData()->GetArray(arrays::Process);
-  if (rank == 0 && piecesAsked && process)
-  {
-    std::vector<int> pieceOfCell(static_cast<std::size_t>(output->GetNumberOfCells()));
-    for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
-    {
-      pieceOfCell[static_cast<std::size_t>(c)] = static_cast<int>(process->GetComponent(c, 0));
-    }
-    own = labelmesher::MeshPiece(output, pieceOfCell, 0);
-    pieces.emplace_back(); // rank 0 keeps its own
-    for (int r = 1; r < ranks; ++r)
-    {
-      pieces.push_back(labelmesher::MeshBytes(labelmesher::MeshPiece(output, pieceOfCell, r)));
-    }
-  }
-  std::string mine;
-  bool handedOut = false;
-  try
-  {
-    handedOut = labelmesher::ScatterFromRankZero(pieces, mine);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Handing out the output's pieces failed: " << e.what() << ".");
-    return;
-  }
-  if (!handedOut)
-  {
-    return; // rank 0 holds the whole mesh (or none, having failed), the others none
-  }
+  std::string problem;
   if (rank == 0)
   {
-    output->ShallowCopy(own);
+    vtkDataArray* process = output->GetCellData()->GetArray(arrays::Process);
+    std::vector<std::vector<vtkIdType>> cellsOf;
+    try
+    {
+      if (process) // without it, one process meshed the whole (one part): nothing to hand out
+      {
+        std::vector<int> pieceOfCell(static_cast<std::size_t>(output->GetNumberOfCells()));
+        for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+        {
+          const double value = process->GetComponent(c, 0);
+          if (!(value >= 0 && value < ranks))
+          {
+            throw std::logic_error("cell " + std::to_string(c) + " was meshed by process " + std::to_string(value) +
+              ", not one of the " + std::to_string(ranks));
+          }
+          pieceOfCell[static_cast<std::size_t>(c)] = static_cast<int>(value);
+        }
+        cellsOf = labelmesher::CellsOfPieces(pieceOfCell, ranks);
+      }
+    }
+    catch (const std::bad_alloc&)
+    {
+      problem = "no memory to cut the mesh into the processes' pieces";
+    }
+    catch (const std::exception& e)
+    {
+      problem = e.what();
+    }
+    for (int r = 1; r < ranks; ++r)
+    {
+      std::string bytes;
+      if (problem.empty() && !cellsOf.empty())
+      {
+        try
+        {
+          bytes = labelmesher::MeshBytes(labelmesher::MeshPiece(output, cellsOf[static_cast<std::size_t>(r)]));
+          if (bytes.empty())
+          {
+            problem = "VTK's writer could not turn process " + std::to_string(r) + "'s piece into bytes";
+          }
+        }
+        catch (const std::bad_alloc&)
+        {
+          problem = "no memory to make process " + std::to_string(r) + "'s piece";
+        }
+      }
+      labelmesher::SendPieceTo(r, problem.empty() && !cellsOf.empty() ? &bytes : nullptr);
+    }
+    if (problem.empty() && !cellsOf.empty())
+    {
+      try
+      {
+        output->ShallowCopy(labelmesher::MeshPiece(output, cellsOf[0]));
+      }
+      catch (const std::bad_alloc&)
+      {
+        problem = "no memory to make its own piece";
+      }
+    }
   }
-  else if (!labelmesher::MeshFromBytes(mine, output))
+  else
+  {
+    std::string bytes;
+    if (labelmesher::ReceivePieceFromRankZero(bytes, problem) && !labelmesher::MeshFromBytes(bytes, output))
+    {
+      problem = "its piece of the output did not read back as a mesh";
+    }
+  }
+  const std::string failure = labelmesher::FirstFailure(problem.empty() ? problem : "handing out the output's pieces: " + problem);
+  if (!failure.empty())
   {
     output->Initialize();
-    vtkErrorMacro("This process's piece of the output came from process 0 unreadable.");
+    vtkErrorMacro(<< failure << ".");
   }
 }
 

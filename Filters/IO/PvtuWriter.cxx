@@ -84,7 +84,7 @@ std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int 
   // The summary lists the arrays of its input and a piece for each piece VTK writes beside it
   // (none for an empty one): its input is the mesh's first cell, every piece that cell, all
   // thrown away with the scratch folder.
-  const vtkSmartPointer<vtkUnstructuredGrid> sample = MeshPiece(mesh, std::vector<int>(1, 0), 0);
+  const vtkSmartPointer<vtkUnstructuredGrid> sample = MeshPiece(mesh, std::vector<vtkIdType>{ 0 });
   const ScratchFolder scratch;
   const fs::path summary = scratch.Path / fs::path(path).filename();
   vtkNew<vtkXMLPUnstructuredGridWriter> writer;
@@ -215,10 +215,11 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
     const fs::path folder = fs::path(path).parent_path();
     const std::vector<std::string> earlier = EarlierPieces(path);
     std::vector<std::unique_ptr<SafeFile>> files;
+    const std::vector<std::vector<vtkIdType>> cellsOf = CellsOfPieces(pieceOfCell, pieces);
     for (int p = 0; p < pieces; ++p)
     {
       std::ostringstream bytes;
-      WriteVtu(MeshPiece(mesh, pieceOfCell, p), bytes);
+      WriteVtu(MeshPiece(mesh, cellsOf[static_cast<std::size_t>(p)]), bytes);
       files.push_back(Written((folder / sources[static_cast<std::size_t>(p)]).string(), bytes.str()));
     }
     files.push_back(Written(path, summary));

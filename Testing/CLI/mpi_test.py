@@ -13,6 +13,7 @@ exit status 1, and no file written; --no-decimate is refused the same way."""
 
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -224,15 +225,21 @@ def case_slab_only():
         print(f"OK: {name}: process 1 read its slab alone, and refused a bad value in it")
     # Its memory limit is checked again once its slab is known. A thin column through a tall image
     # (1,000 slices of 256 x 256) spreads the parts over its height, so process 1's slab is most
-    # of the image (~47 MiB); 75 MiB holds what it needs before that (~37 MiB on starting and the
-    # fixed 25 MiB) but not the slab too. (Without the second check the run would succeed.)
+    # of the image (~47 MiB). Its limit holds what it needs before that (what it holds on
+    # starting, read from a run refused at that point, and the fixed 25 MiB) with 20 MiB to
+    # spare, but not the slab too. (Without the second check the run succeeds: checked by hand.)
     _, y, x = np.ogrid[0:1000, 0:256, 0:256]
     column = np.broadcast_to(((y - 128) ** 2 + (x - 128) ** 2 < 16).astype(np.uint8), (1000, 256, 256))
     image, out = write_nrrd("column.nrrd", column), path("column.msh")
     if os.path.exists(out):
         os.remove(out)
+    probe = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q"), ":",
+                 "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q", "--max-memory", "1M")])
+    expect_one_line_failure(probe, "the least a process that reads its slab of the image holds", out)
+    held = int(re.search(r"(\d+) MiB of it in use", probe.stderr).group(1))
+    limit = f"{held + 25 + 20}M"
     result = run([*MPIRUN, "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q"), ":",
-                  "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q", "--max-memory", "75M")])
+                  "-np", "1", EXE, *mesh_args(image, out, "--no-measure", "-q", "--max-memory", limit)])
     expect_one_line_failure(result, "process 1 of 2: this run needs about", out)
     assert "estimated from its slab of" in result.stderr, result.stderr
     os.remove(image)

@@ -81,22 +81,28 @@ std::vector<std::vector<double>> CellCorners(vtkUnstructuredGrid* mesh, vtkIdTyp
 TEST(OutputPieces, APieceHoldsItsCellsTheirPointsAndEveryArray)
 {
   const auto mesh = ThreeCells();
-  const std::vector<int> pieceOf{ 1, 0, 1 };
-  const auto piece = MeshPiece(mesh, pieceOf, 1);
+  const auto cellsOf = CellsOfPieces({ 1, 0, 1 }, 3);
+  ASSERT_EQ(cellsOf.size(), 3u);
+  EXPECT_EQ(cellsOf[0], (std::vector<vtkIdType>{ 1 }));
+  EXPECT_EQ(cellsOf[1], (std::vector<vtkIdType>{ 0, 2 }));
+  EXPECT_TRUE(cellsOf[2].empty());
+  EXPECT_EQ(CellsOfPieces({ 1, -1, 5 }, 2), (std::vector<std::vector<vtkIdType>>{ {}, { 0 } })); // in none
+
+  const auto piece = MeshPiece(mesh, cellsOf[1]);
   ASSERT_EQ(piece->GetNumberOfCells(), 2);
   EXPECT_EQ(piece->GetNumberOfPoints(), 5); // cells 0 and 2 use all five
   EXPECT_EQ(CellCorners(piece, 0), CellCorners(mesh, 0));
   EXPECT_EQ(CellCorners(piece, 1), CellCorners(mesh, 2));
   EXPECT_EQ(piece->GetCellData()->GetArray("Material")->GetTuple1(1), 12);
-  const auto other = MeshPiece(mesh, pieceOf, 0);
+  const auto other = MeshPiece(mesh, cellsOf[0]);
   ASSERT_EQ(other->GetNumberOfCells(), 1);
   EXPECT_EQ(other->GetNumberOfPoints(), 4); // only the points cell 1 uses
   EXPECT_EQ(CellCorners(other, 0), CellCorners(mesh, 1));
   for (vtkIdType p = 0; p < other->GetNumberOfPoints(); ++p)
     EXPECT_EQ(other->GetPointData()->GetArray("Height")->GetTuple1(p), other->GetPoint(p)[2]);
-  EXPECT_EQ(MeshPiece(mesh, pieceOf, 2)->GetNumberOfCells(), 0);
-  for (const auto& p : { piece, other })
-    EXPECT_EQ(p->GetFieldData()->GetNumberOfArrays(), 2); // each piece reads alone
+  EXPECT_EQ(MeshPiece(mesh, cellsOf[2])->GetNumberOfCells(), 0);
+  EXPECT_EQ(piece->GetFieldData()->GetNumberOfArrays(), 2); // each piece reads alone
+  EXPECT_EQ(other->GetFieldData()->GetNumberOfArrays(), 2);
 }
 
 TEST(OutputPieces, AMeshReplacedByItsOwnPieceKeepsItsFields)
@@ -104,7 +110,7 @@ TEST(OutputPieces, AMeshReplacedByItsOwnPieceKeepsItsFields)
   // Rank 0 keeps its piece in place of the whole mesh: the piece's fields must not be the
   // mesh's own object, or copying the piece over the mesh would empty them.
   const auto mesh = ThreeCells();
-  const auto own = MeshPiece(mesh, { 0, 1, 0 }, 0);
+  const auto own = MeshPiece(mesh, { 0, 2 });
   mesh->ShallowCopy(own);
   EXPECT_EQ(mesh->GetNumberOfCells(), 2);
   ASSERT_EQ(mesh->GetFieldData()->GetNumberOfArrays(), 2);
@@ -143,6 +149,7 @@ TEST(OutputPieces, BytesThatAreNoMeshAreRefused)
 {
   vtkNew<vtkUnstructuredGrid> mesh;
   EXPECT_FALSE(MeshFromBytes("not a mesh", mesh));
+  EXPECT_FALSE(MeshFromBytes("", mesh));
   const std::string bytes = MeshBytes(ThreeCells());
   EXPECT_FALSE(MeshFromBytes(bytes.substr(0, bytes.size() / 2), mesh));
 }

@@ -11,13 +11,15 @@ refuse, or one that differs only beyond their slabs, which gives rank 0's image'
 """
 import hashlib
 import json
+import os
+import re
 import sys
 
 from paraview import servermanager
 from paraview.simple import LoadPlugin, SaveData
 from paraview.vtk.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
-from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 plugin, image_path, block_cells, out_path = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
 rank = servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
@@ -30,8 +32,9 @@ reader.UpdatePipeline()
 mesher = LabelMesher(Input=reader, BlockCells=block_cells)  # noqa: F821 (Distributed: on by default)
 mesher.Labels = ["POINTS", "Labels"]
 mesher.UpdatePipeline()
-# Each process holds the cells it meshed, every piece with the run's fields: the pieces are
-# fetched one by one (this ParaView's Fetch appends only rank 0's) and appended here.
+# Each process holds the cells of the parts it meshed, every piece with the run's fields: the
+# pieces are fetched one by one and appended here (ParaView 5.11's Fetch without a process
+# returned rank 0's piece alone here).
 processes = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 pieces = [servermanager.Fetch(mesher, r) for r in range(processes)]
 append = vtkAppendFilter()
@@ -43,13 +46,19 @@ piece_processes = [sorted(set(vtk_to_numpy(p.GetCellData().GetArray("Process")).
                    if p.GetNumberOfCells() and p.GetCellData().GetArray("Process") else [] for p in pieces]
 pvtu = None
 if len(sys.argv) == 5 and mesh.GetNumberOfCells() > 0:
-    # ParaView's parallel writer, one .vtu piece a process, read back whole.
+    # ParaView's parallel writer: one .vtu piece a process.
     SaveData(out_path + ".pvtu", proxy=mesher)
     if rank == 0:
-        written = vtkXMLPUnstructuredGridReader()
-        written.SetFileName(out_path + ".pvtu")
-        written.Update()
-        pvtu = {"pieces": written.GetNumberOfPieces(), "cells": written.GetOutput().GetNumberOfCells()}
+        # The summary's pieces, each read alone: their cells, in order.
+        with open(out_path + ".pvtu") as f:
+            sources = re.findall(r'Source="([^"]+)"', f.read())
+        piece_reader = vtkXMLUnstructuredGridReader()
+        cells_of_pieces = []
+        for source in sources:
+            piece_reader.SetFileName(os.path.join(os.path.dirname(out_path), source))
+            piece_reader.Update()
+            cells_of_pieces.append(piece_reader.GetOutput().GetNumberOfCells())
+        pvtu = {"piece_cells": cells_of_pieces}
 # A filter that does not share its run out meshes the whole image once (for piece 0), not once a
 # process.
 initial = LabelOctreeMesher(Input=reader)  # noqa: F821

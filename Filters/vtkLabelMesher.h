@@ -227,9 +227,10 @@ public:
    * same image and parameters; each meshes its parts, and rank 0 joins them
    * into the mesh one process makes. When the pipeline asks each process for
    * its own piece (piece `rank` of as many as there are processes, as
-   * ParaView's does), each process's output is the cells it meshed (cell array
-   * Process) with the run's field data; otherwise rank 0's output is the
-   * whole mesh and the others' are empty. A process that fails makes rank 0 fail with its rank and
+   * ParaView's does), each process's output is the cells of the parts it
+   * meshed (cell array Process) with the run's field data, without ghost
+   * cells (the interfaces and curved outputs stay whole on rank 0); otherwise
+   * rank 0's output is the whole mesh and the others' are empty. A process that fails makes rank 0 fail with its rank and
    * reason; every process's image geometry and parameters are compared with
    * rank 0's first, and the labels of each slab a process meshes with rank 0's.
    * Rank 0 asks its input for the whole image. Another process whose input can

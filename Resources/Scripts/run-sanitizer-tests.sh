@@ -18,9 +18,9 @@ source "$here/ccache.sh"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DLABELMESHER_SANITIZE=address,undefined -DLABELMESHER_BUILD_BENCHMARKS=OFF \
   -DLABELMESHER_WRAP_PYTHON=OFF -DLABELMESHER_BUILD_GUI=OFF "${labelmesher_ccache[@]}"
-# Only what the unit, CLI and property tests run: the C++ test programs, the CLI and the scan
-# (not the example program, whose tests this script does not run).
-targets=(labelmesher labelmesher_property_scan)
+# Only what the unit, CLI and property tests run: the C++ test programs, the CLI, the scan and
+# the MPI piece exchange (not the example program, whose tests this script does not run).
+targets=(labelmesher labelmesher_property_scan MPIPieceExchange)
 while IFS= read -r source; do
   targets+=("$(basename "$source" .cxx)")
 done < <(find Testing/Cxx -name 'Test*.cxx' | sort)

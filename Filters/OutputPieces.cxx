@@ -5,11 +5,13 @@
 // of being refused in one line).
 #include "OutputPieces.h"
 
+#include "LabelMesherArrayNames.h"
 #include "VTKMessages.h"
 
 #include "vtkCellData.h"
 #include "vtkCharArray.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -21,9 +23,35 @@
 #include "vtkUnstructuredGridWriter.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <sstream>
+#include <string>
 
 namespace labelmesher
 {
+
+std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh, int pieces)
+{
+  std::vector<int> piece(static_cast<std::size_t>(mesh->GetNumberOfCells()), 0);
+  vtkDataArray* process = mesh->GetCellData()->GetArray(arrays::Process);
+  if (process == nullptr)
+    return piece;
+  if (process->GetNumberOfTuples() != mesh->GetNumberOfCells() || process->GetNumberOfComponents() != 1)
+    throw std::invalid_argument("its cell array Process is not one value a cell");
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const double value = process->GetComponent(c, 0);
+    if (!(value >= 0 && value < pieces && value == std::floor(value)))
+    {
+      std::ostringstream reason;
+      reason << "cell " << c << " has Process " << value << ", not a process rank below " << pieces;
+      throw std::invalid_argument(reason.str());
+    }
+    piece[static_cast<std::size_t>(c)] = static_cast<int>(value);
+  }
+  return piece;
+}
 
 std::vector<std::vector<vtkIdType>> CellsOfPieces(const std::vector<int>& pieceOfCell, int pieces)
 {

@@ -22,6 +22,12 @@ class vtkUnstructuredGrid;
 namespace labelmesher
 {
 
+/// The piece of every cell of `mesh`: its value in the cell array "Process"
+/// (0 for every cell without that array). Throws std::invalid_argument naming
+/// the first cell whose value is not a whole number in [0, pieces), or an array
+/// that is not one value a cell.
+std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh, int pieces);
+
 /// The cells of each of `pieces` pieces, by `pieceOfCell` (one entry a cell);
 /// an entry outside [0, pieces) is in none.
 std::vector<std::vector<vtkIdType>> CellsOfPieces(const std::vector<int>& pieceOfCell, int pieces);

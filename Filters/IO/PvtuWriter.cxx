@@ -4,13 +4,10 @@
 // final flush, and writing the pieces ourselves keeps every byte checked.
 #include "PvtuWriter.h"
 
-#include "LabelMesherArrayNames.h"
 #include "OutputPieces.h"
 #include "SafeFile.h"
 #include "VtkFileWriters.h"
 
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -18,7 +15,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cmath>
 #include <cstdlib>
 #include <memory>
 #include <filesystem>
@@ -57,26 +53,6 @@ public:
 
 /// More pieces than any run has processes: a "Process" array asking for more is not one.
 constexpr int kMostPieces = 1 << 16;
-
-/// The piece of every cell: its "Process" value, or 0 without that array.
-/// Throws WriteError for an array that is not one integer in [0, kMostPieces) a cell.
-std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh)
-{
-  std::vector<int> piece(static_cast<std::size_t>(mesh->GetNumberOfCells()), 0);
-  vtkDataArray* process = mesh->GetCellData()->GetArray(arrays::Process);
-  if (process == nullptr)
-    return piece;
-  if (process->GetNumberOfTuples() != mesh->GetNumberOfCells() || process->GetNumberOfComponents() != 1)
-    throw WriteError("its cell array Process is not one value a cell");
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    const double value = process->GetComponent(c, 0);
-    if (!(value >= 0 && value < kMostPieces && value == std::floor(value)))
-      throw WriteError("its cell array Process holds " + std::to_string(value) + ", not a process rank");
-    piece[static_cast<std::size_t>(c)] = static_cast<int>(value);
-  }
-  return piece;
-}
 
 /// VTK's summary for `pieces` pieces of `mesh` named after `path`, as text.
 std::string SummaryText(vtkUnstructuredGrid* mesh, const std::string& path, int pieces)
@@ -202,7 +178,7 @@ std::vector<std::string> WritePvtu(vtkUnstructuredGrid* mesh, const std::string&
   std::vector<std::string> written, renamed;
   try
   {
-    const std::vector<int> pieceOfCell = PieceOfCells(mesh);
+    const std::vector<int> pieceOfCell = PieceOfCells(mesh, kMostPieces);
     const int pieces = 1 + *std::max_element(pieceOfCell.begin(), pieceOfCell.end());
     RefuseLinkedSummary(path); // SafeFile checks the rest
     const std::string summary = SummaryText(mesh, path, pieces);

@@ -6,7 +6,7 @@
  * @file ImageFingerprint.h
  * Where a label image places its mesh, as text: its extent, spacing, origin
  * and direction. The processes of a distributed run (the CLI under mpirun,
- * vtkLabelMesher Distributed) compare it with rank 0's (DifferenceFromRankZero,
+ * vtkLabelMesher Distributed) compare it with rank 0's (SameAsRankZero,
  * MPIPartExchange.h): parts of different images would not join into one mesh.
  * Their labels are compared slab by slab as each process takes its slab
  * (PartAssignment::SlabHash), since a process may hold no more. Not installed.

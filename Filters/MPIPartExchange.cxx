@@ -14,7 +14,6 @@
 #include <deque>
 #include <initializer_list>
 #include <stdexcept>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -29,10 +28,19 @@ constexpr int kPartTag = 7311;
 constexpr int kNoticeTag = 7312;
 constexpr int kAssignmentTag = 7313;
 constexpr int kOutputPieceTag = 7314;
-/// An output piece travels in messages of this many bytes at most: small enough that a process
-/// with no memory for its piece can still take and drop each (ReceivePieceFromRankZero).
-constexpr std::size_t kOutputChunk = std::size_t(64) << 20;
+/// A part or an assignment travels in messages of at most this many bytes (MPI counts are ints).
 constexpr std::size_t kPiece = std::size_t(1) << 30;
+/// An output piece travels in messages of at most this many bytes: any size below 2 GiB would do;
+/// this one lets MPI.PieceExchange cross a message's end with a piece of a size a test affords.
+constexpr std::size_t kOutputChunk = std::size_t(64) << 20;
+
+/// Calls `chunk(at, n)` for the consecutive runs of at most `most` of `size` bytes.
+template <class Chunk>
+void ForEachChunk(std::size_t size, std::size_t most, Chunk&& chunk)
+{
+  for (std::size_t at = 0; at < size; at += most)
+    chunk(at, static_cast<int>(std::min(most, size - at)));
+}
 
 void Check(int status, const char* what)
 {
@@ -166,12 +174,10 @@ private:
     out.Bytes = std::move(message);
     out.Requests.emplace_back();
     Check(MPI_Isend(&out.Length, 1, MPI_UINT64_T, to, tag, Parts(), &out.Requests.back()), what);
-    for (std::size_t at = 0; at < out.Bytes.size(); at += kPiece)
-    {
-      const int n = static_cast<int>(std::min(kPiece, out.Bytes.size() - at));
+    ForEachChunk(out.Bytes.size(), kPiece, [&](std::size_t at, int n) {
       out.Requests.emplace_back();
       Check(MPI_Isend(out.Bytes.data() + at, n, MPI_BYTE, to, tag, Parts(), &out.Requests.back()), what);
-    }
+    });
   }
 
   /// The next message from `from` with `tag`, as Post sent it.
@@ -180,11 +186,9 @@ private:
     std::uint64_t length = 0;
     Check(MPI_Recv(&length, 1, MPI_UINT64_T, from, tag, Parts(), MPI_STATUS_IGNORE), what);
     std::vector<char> message(static_cast<std::size_t>(length));
-    for (std::size_t at = 0; at < message.size(); at += kPiece)
-    {
-      const int n = static_cast<int>(std::min(kPiece, message.size() - at));
+    ForEachChunk(message.size(), kPiece, [&](std::size_t at, int n) {
       Check(MPI_Recv(message.data() + at, n, MPI_BYTE, from, tag, Parts(), MPI_STATUS_IGNORE), what);
-    }
+    });
     return message;
   }
 
@@ -271,33 +275,36 @@ std::string FirstFailure(const std::string& failure)
   return failure;
 }
 
-std::string DifferenceFromRankZero(const std::string& fingerprint)
+bool SameAsRankZero(const std::string& value)
 {
 #ifdef SC_ENABLE_MPI
   if (WorldSize() > 1)
-  {
-    if (BroadcastString(fingerprint, 0, "share the run's parameters") != fingerprint)
-      return "it was given another image or other meshing parameters than process 0 (every process must mesh the "
-             "same)";
-  }
+    return BroadcastString(value, 0, "share the run's parameters") == value;
 #endif
-  (void)fingerprint;
-  return {};
+  (void)value;
+  return true;
 }
 
-void SendPieceTo(int rank, const std::string* bytes)
+bool SendPieceTo(int rank, const std::string* bytes)
 {
 #ifdef SC_ENABLE_MPI
-  // Its length (-1: none), then chunks of at most kOutputChunk bytes.
+  // Its length (-1: none); the process answers whether it made room; then the bytes, in chunks.
+  const char* what = "send a process its piece of the output";
   const std::int64_t length = bytes ? static_cast<std::int64_t>(bytes->size()) : -1;
-  Check(MPI_Send(&length, 1, MPI_INT64_T, rank, kOutputPieceTag, Parts()), "send a process its piece of the output");
-  for (std::size_t at = 0; bytes && at < bytes->size(); at += kOutputChunk)
-    Check(MPI_Send(bytes->data() + at, static_cast<int>(std::min(kOutputChunk, bytes->size() - at)), MPI_BYTE, rank,
-            kOutputPieceTag, Parts()),
-      "send a process its piece of the output");
+  Check(MPI_Send(&length, 1, MPI_INT64_T, rank, kOutputPieceTag, Parts()), what);
+  if (!bytes)
+    return false;
+  int room = 0;
+  Check(MPI_Recv(&room, 1, MPI_INT, rank, kOutputPieceTag, Parts(), MPI_STATUS_IGNORE), what);
+  if (room)
+    ForEachChunk(bytes->size(), kOutputChunk, [&](std::size_t at, int n) {
+      Check(MPI_Send(bytes->data() + at, n, MPI_BYTE, rank, kOutputPieceTag, Parts()), what);
+    });
+  return room != 0;
 #else
   (void)rank;
   (void)bytes;
+  return false;
 #endif
 }
 
@@ -305,31 +312,29 @@ bool ReceivePieceFromRankZero(std::string& bytes, std::string& problem)
 {
   problem.clear();
 #ifdef SC_ENABLE_MPI
+  const char* what = "receive this process's piece of the output";
   std::int64_t length = -1;
-  Check(MPI_Recv(&length, 1, MPI_INT64_T, 0, kOutputPieceTag, Parts(), MPI_STATUS_IGNORE),
-    "receive this process's piece of the output");
+  Check(MPI_Recv(&length, 1, MPI_INT64_T, 0, kOutputPieceTag, Parts(), MPI_STATUS_IGNORE), what);
   if (length < 0)
     return false;
-  const auto size = static_cast<std::size_t>(length);
-  std::string dropped; // where a piece too large to hold goes, a chunk at a time
+  int room = 1;
   try
   {
-    bytes.assign(size, '\0');
+    bytes.assign(static_cast<std::size_t>(length), '\0');
   }
-  catch (const std::bad_alloc&)
+  catch (const std::exception&) // std::bad_alloc, or std::length_error beyond what a string holds
   {
     bytes.clear();
-    problem = "it had no memory for its piece of the output (" + std::to_string(size) + " bytes)";
-    dropped.assign(std::min(size, kOutputChunk), '\0');
+    bytes.shrink_to_fit();
+    room = 0;
+    problem = "it had no memory for its piece of the output (" + std::to_string(length) + " bytes)";
   }
-  for (std::size_t at = 0; at < size; at += kOutputChunk)
-  {
-    char* into = problem.empty() ? bytes.data() + at : dropped.data();
-    Check(MPI_Recv(into, static_cast<int>(std::min(kOutputChunk, size - at)), MPI_BYTE, 0, kOutputPieceTag, Parts(),
-            MPI_STATUS_IGNORE),
-      "receive this process's piece of the output");
-  }
-  return problem.empty();
+  Check(MPI_Send(&room, 1, MPI_INT, 0, kOutputPieceTag, Parts()), what);
+  if (room)
+    ForEachChunk(bytes.size(), kOutputChunk, [&](std::size_t at, int n) {
+      Check(MPI_Recv(bytes.data() + at, n, MPI_BYTE, 0, kOutputPieceTag, Parts(), MPI_STATUS_IGNORE), what);
+    });
+  return room != 0;
 #else
   (void)bytes;
   return false;

@@ -40,19 +40,19 @@ int LaunchedProcesses();
 /// no process waits for one that has given up. One process: `failure` itself.
 std::string FirstFailure(const std::string& failure);
 
-/// Collective over the world's processes: "" when `fingerprint` (what decides the
-/// mesh: the image and the parameters) is rank 0's, else a reason. One process: "".
-std::string DifferenceFromRankZero(const std::string& fingerprint);
+/// Collective over the world's processes: whether `value` (what decides the mesh:
+/// the image and the parameters, say) is rank 0's. One process: true.
+bool SameAsRankZero(const std::string& value);
 
-/// Rank 0 of the world's processes: sends process `rank` its piece of the
-/// output, or none (null). Point to point: that process must be in
+/// Rank 0 of the world's processes: offers process `rank` its piece of the
+/// output, or none (null), and sends its bytes if that process made room for
+/// them; true when it did. Point to point: that process must be in
 /// ReceivePieceFromRankZero. Throws std::runtime_error when MPI fails.
-void SendPieceTo(int rank, const std::string* bytes);
+bool SendPieceTo(int rank, const std::string* bytes);
 
 /// A process other than rank 0: its piece of the output from rank 0 into
-/// `bytes`; false when rank 0 sent none. A piece it cannot hold (no memory) is
-/// still taken, and dropped, so that rank 0 does not wait for ever: then it
-/// returns false with `problem` saying so.
+/// `bytes`; false when rank 0 sent none, or when this process has no memory
+/// for it (then `problem` says so, rank 0 is told, and no bytes travel).
 bool ReceivePieceFromRankZero(std::string& bytes, std::string& problem);
 
 /// An exchange between the world's processes when there are several, else

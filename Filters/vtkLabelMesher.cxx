@@ -10,7 +10,7 @@
 #include "MPIStartup.h"
 #include "Streaming/PartExchange.h"
 #include "LabelImageConversion.h"
-#include "OutputPieces.h"
+#include "PieceHandOut.h"
 #include "LabelMesherArrayNames.h"
 #include "MemoryBudget.h"
 #include "Mesh/MeshSelection.h"
@@ -386,7 +386,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   const bool shares = this->SharesOutAcrossProcesses();
   const bool slabOnly = this->ReadsItsSlabOnly(inputInformation);
   // A parallel pipeline (ParaView's) asks each process for its own piece: each then gets the
-  // cells of the parts it meshed (HandOutPieces).
+  // cells of the parts it meshed (PieceHandOut.h).
   vtkInformation* outputInformation = outputVector->GetInformationObject(0);
   const bool handsOutPieces = shares &&
     outputInformation->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) == labelmesher::WorldSize() &&
@@ -409,28 +409,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   }
   if (shares)
   {
-    // Every process must mesh the same (rank 0 joins their parts: parts of different images or
-    // parameters make no mesh), checked before anything that could stop one process and not
-    // the others (they would wait for it in the next step they take together). The labels are
-    // compared slab by slab, as each process takes its slab (StreamedPipeline.cxx).
-    std::ostringstream parameters;
-    parameters.precision(17);
-    parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
-               << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
-               << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve // not MemoryLimit: each process's own
-               << (handsOutPieces ? " pieces" : " whole"); // so that all or none take HandOutPieces' steps
-    const std::string difference =
-      labelmesher::DifferenceFromRankZero(labelmesher::ImageFingerprint(input) + parameters.str());
-    // A process whose reader failed has an empty image, which differs from rank 0's too: its
-    // reason is that it has none (the reader's own error is in that process's output).
-    std::string problem = difference;
-    if (!slabOnly && input->GetNumberOfPoints() == 0)
-    {
-      problem = labelmesher::WorldRank() == 0
-        ? "The input image is empty"
-        : "its input image is empty (its reader's error, if it failed, is in that process's output)";
-    }
-    const std::string failure = labelmesher::FirstFailure(problem);
+    const std::string failure = this->FirstDifferenceBetweenProcesses(input, slabOnly, handsOutPieces);
     if (!failure.empty())
     {
       vtkErrorMacro(<< failure << ".");
@@ -480,7 +459,11 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   }
   if (handsOutPieces)
   {
-    this->HandOutPieces(output);
+    const std::string failure = labelmesher::HandOutPieces(output);
+    if (!failure.empty())
+    {
+      vtkErrorMacro(<< failure << ".");
+    }
   }
   this->SetProgressText(nullptr);
   if (!this->GetAbortExecute())
@@ -491,89 +474,42 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
 }
 
 //------------------------------------------------------------------------------
-void vtkLabelMesher::HandOutPieces(vtkUnstructuredGrid* output)
+std::string vtkLabelMesher::FirstDifferenceBetweenProcesses(vtkImageData* input, bool slabOnly, bool handsOutPieces)
 {
-  // Rank 0 sends every other process its piece, one at a time (only one piece's bytes are held
-  // at once), then keeps its own; any failure on any process leaves every output empty (a piece
-  // missing would be a mesh silently wrong), named on every process.
-  const int ranks = labelmesher::WorldSize(), rank = labelmesher::WorldRank();
+  // Every process must mesh the same (rank 0 joins their parts: parts of different images or
+  // parameters make no mesh), checked before anything that could stop one process and not the
+  // others (they would wait for it in the next step they take together). The labels are
+  // compared slab by slab, as each process takes its slab (StreamedPipeline.cxx).
+  std::ostringstream parameters;
+  parameters.precision(17);
+  parameters << this->ImageToMeshDistance << ' ' << this->MeshToImageDistance << ' ' << this->MinimumAngle << ' '
+             << this->RelocateInteriorVertices << ' ' << this->IncludeBackground << ' ' << this->BlockCells << ' '
+             << this->PartBlocks << ' ' << this->Order << ' ' << this->Curve; // not MemoryLimit: each process's own
+  // Both comparisons are made on every process: each is a step they take together.
+  const bool sameRun = labelmesher::SameAsRankZero(labelmesher::ImageFingerprint(input) + parameters.str());
+  // So that all or none take HandOutPieces' steps.
+  const bool sameRequest = labelmesher::SameAsRankZero(handsOutPieces ? "pieces" : "whole");
   std::string problem;
-  if (rank == 0)
+  if (!slabOnly && input->GetNumberOfPoints() == 0)
   {
-    vtkDataArray* process = output->GetCellData()->GetArray(arrays::Process);
-    std::vector<std::vector<vtkIdType>> cellsOf;
-    try
-    {
-      if (process) // without it, one process meshed the whole (one part): nothing to hand out
-      {
-        std::vector<int> pieceOfCell(static_cast<std::size_t>(output->GetNumberOfCells()));
-        for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
-        {
-          const double value = process->GetComponent(c, 0);
-          if (!(value >= 0 && value < ranks))
-          {
-            throw std::logic_error("cell " + std::to_string(c) + " was meshed by process " + std::to_string(value) +
-              ", not one of the " + std::to_string(ranks));
-          }
-          pieceOfCell[static_cast<std::size_t>(c)] = static_cast<int>(value);
-        }
-        cellsOf = labelmesher::CellsOfPieces(pieceOfCell, ranks);
-      }
-    }
-    catch (const std::bad_alloc&)
-    {
-      problem = "no memory to cut the mesh into the processes' pieces";
-    }
-    catch (const std::exception& e)
-    {
-      problem = e.what();
-    }
-    for (int r = 1; r < ranks; ++r)
-    {
-      std::string bytes;
-      if (problem.empty() && !cellsOf.empty())
-      {
-        try
-        {
-          bytes = labelmesher::MeshBytes(labelmesher::MeshPiece(output, cellsOf[static_cast<std::size_t>(r)]));
-          if (bytes.empty())
-          {
-            problem = "VTK's writer could not turn process " + std::to_string(r) + "'s piece into bytes";
-          }
-        }
-        catch (const std::bad_alloc&)
-        {
-          problem = "no memory to make process " + std::to_string(r) + "'s piece";
-        }
-      }
-      labelmesher::SendPieceTo(r, problem.empty() && !cellsOf.empty() ? &bytes : nullptr);
-    }
-    if (problem.empty() && !cellsOf.empty())
-    {
-      try
-      {
-        output->ShallowCopy(labelmesher::MeshPiece(output, cellsOf[0]));
-      }
-      catch (const std::bad_alloc&)
-      {
-        problem = "no memory to make its own piece";
-      }
-    }
+    // A process whose reader failed has an empty image, which differs from rank 0's too: its
+    // reason is that it has none (the reader's own error is in that process's output).
+    problem = labelmesher::WorldRank() == 0
+      ? "The input image is empty"
+      : "its input image is empty (its reader's error, if it failed, is in that process's output)";
   }
-  else
+  else if (!sameRun)
   {
-    std::string bytes;
-    if (labelmesher::ReceivePieceFromRankZero(bytes, problem) && !labelmesher::MeshFromBytes(bytes, output))
-    {
-      problem = "its piece of the output did not read back as a mesh";
-    }
+    problem = "it was given another image or other meshing parameters than process 0 (every process must mesh the "
+              "same)";
   }
-  const std::string failure = labelmesher::FirstFailure(problem.empty() ? problem : "handing out the output's pieces: " + problem);
-  if (!failure.empty())
+  else if (!sameRequest)
   {
-    output->Initialize();
-    vtkErrorMacro(<< failure << ".");
+    problem = std::string("its pipeline asked for ") + (handsOutPieces ? "its own piece" : "the whole mesh") +
+      " where process 0's asked for " + (handsOutPieces ? "the whole mesh" : "each process's piece") +
+      " (every process must ask alike)";
   }
+  return labelmesher::FirstFailure(problem);
 }
 
 //------------------------------------------------------------------------------

@@ -378,12 +378,10 @@ private:
   /// labels in it (null when there are none), and the producer's first error (empty if none).
   vtkImageData* UpdateInputExtent(const int extent[6], vtkDataArray*& labels, std::string& problem);
   bool MeshOnly(vtkImageData* input, vtkUnstructuredGrid* output, vtkPolyData* interfaces, double share);
-  /// Collective, on every process of a shared-out run whose pipeline asks each process for its
-  /// own piece (piece `rank` of as many as there are processes: pvbatch, ParaView's server):
-  /// rank 0 keeps the cells of the parts it meshed and hands each other process the cells of
-  /// its parts (cell array Process), each piece with the whole run's field data. Any failure
-  /// empties every output, with one error naming the process.
-  void HandOutPieces(vtkUnstructuredGrid* output);
+  /// Collective, on every process of a shared-out run: "" when every process meshes what rank 0
+  /// does (image, parameters) and asks for the same output (`handsOutPieces`: each process its
+  /// own piece, as pvbatch does), else the lowest differing process's reason, on every process.
+  std::string FirstDifferenceBetweenProcesses(vtkImageData* input, bool slabOnly, bool handsOutPieces);
   /// False when stopped on request before the curver made its mesh.
   bool CurveMesh(vtkImageData* input, vtkUnstructuredGrid* linear, vtkUnstructuredGrid* curved, double start);
 

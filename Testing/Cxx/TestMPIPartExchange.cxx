@@ -30,7 +30,7 @@ TEST(MPIPartExchange, AfterMPIIsFinalizedThisProcessIsAlone)
       StartMPI();
       MPI_Finalize();
       const bool alone = WorldRank() == 0 && WorldSize() == 1 && WorldPartExchange() == nullptr &&
-        FirstFailure("reason") == "reason" && DifferenceFromRankZero("fingerprint").empty();
+        FirstFailure("reason") == "reason" && SameAsRankZero("fingerprint");
       std::_Exit(alone ? 0 : 3);
     },
     ::testing::ExitedWithCode(0), "");

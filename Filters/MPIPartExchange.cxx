@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Parts as byte messages over a duplicate of MPI_COMM_WORLD: a length, then pieces of at
-// most 1 GiB (MPI counts are ints).
+// Parts and output pieces as byte messages over a duplicate of MPI_COMM_WORLD: a length, then
+// chunks (MPI counts are ints); an output piece waits for its process's room between the two.
 #include "MPIPartExchange.h"
 
 #include "MPIStartup.h"
@@ -311,6 +311,7 @@ bool SendPieceTo(int rank, const std::string* bytes)
 bool ReceivePieceFromRankZero(std::string& bytes, std::string& problem)
 {
   problem.clear();
+  bytes.clear();
 #ifdef SC_ENABLE_MPI
   const char* what = "receive this process's piece of the output";
   std::int64_t length = -1;

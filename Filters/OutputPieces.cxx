@@ -45,6 +45,7 @@ std::vector<int> PieceOfCells(vtkUnstructuredGrid* mesh, int pieces)
     if (!(value >= 0 && value < pieces && value == std::floor(value)))
     {
       std::ostringstream reason;
+      reason.precision(17);
       reason << "cell " << c << " has Process " << value << ", not a process rank below " << pieces;
       throw std::invalid_argument(reason.str());
     }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Rank 0 cuts the mesh and sends the pieces (MPIPartExchange.h moves the bytes); every process
 // then agrees on the first failure, so that none waits for a piece that will not come and none
-// keeps a piece of a mesh another process lost.
+// keeps a piece of a mesh another process lost. No exception leaves a step before that
+// agreement: a process that left it would leave the others waiting in it for ever.
 #include "PieceHandOut.h"
 
 #include "LabelMesherArrayNames.h"
@@ -20,67 +21,78 @@ namespace labelmesher
 namespace
 {
 
-/// Rank 0: sends every other process its piece of `mesh` and keeps its own. Returns what went
-/// wrong ("" when nothing); every process is sent something (a piece, or none) whatever fails,
-/// since each waits for it.
-std::string SendPiecesFromRankZero(vtkUnstructuredGrid* mesh, int ranks)
+/// Runs `step` unless `problem` already holds one; what it throws becomes `problem`.
+template <class Step>
+void Attempt(std::string& problem, const std::string& what, Step&& step)
 {
-  std::string problem;
-  std::vector<std::vector<vtkIdType>> cellsOf; // empty: nothing to hand out
+  if (!problem.empty())
+    return;
   try
   {
-    // Without the array one process meshed the whole (one part): rank 0 keeps it, uncopied.
-    if (mesh->GetCellData()->GetArray(arrays::Process) != nullptr)
-      cellsOf = CellsOfPieces(PieceOfCells(mesh, ranks), ranks);
+    step();
   }
   catch (const std::bad_alloc&)
   {
-    problem = "no memory to cut the mesh into the processes' pieces";
+    problem = "no memory to " + what;
   }
   catch (const std::exception& e)
   {
     problem = e.what();
   }
+  catch (...)
+  {
+    problem = "could not " + what;
+  }
+}
+
+/// Rank 0: the cells of each process's piece (none: nothing to hand out, rank 0 keeps the
+/// whole). Without the array Process one process meshed the whole (one part).
+std::vector<std::vector<vtkIdType>> CutByProcess(vtkUnstructuredGrid* mesh, int ranks, std::string& problem)
+{
+  std::vector<std::vector<vtkIdType>> cellsOf;
+  if (mesh->GetNumberOfCells() == 0)
+    problem = "process 0 made no mesh (it says why)";
+  Attempt(problem, "cut the mesh into the processes' pieces", [&] {
+    if (mesh->GetCellData()->GetArray(arrays::Process) != nullptr)
+      cellsOf = CellsOfPieces(PieceOfCells(mesh, ranks), ranks);
+  });
+  return cellsOf;
+}
+
+/// Rank 0: sends every other process its piece, or none once anything failed (each waits for
+/// something); a process that made no room for its piece says why itself, and the pieces after
+/// it are not made.
+void SendPieces(vtkUnstructuredGrid* mesh, const std::vector<std::vector<vtkIdType>>& cellsOf, int ranks,
+  std::string& problem)
+{
+  bool refused = false;
   for (int r = 1; r < ranks; ++r)
   {
     std::string bytes;
-    const bool sends = problem.empty() && !cellsOf.empty();
-    if (sends)
-    {
-      try
+    const bool sends = !cellsOf.empty() && !refused;
+    Attempt(problem, "make process " + std::to_string(r) + "'s piece", [&] {
+      if (sends)
       {
         bytes = MeshBytes(MeshPiece(mesh, cellsOf[static_cast<std::size_t>(r)]));
         if (bytes.empty())
           problem = "VTK's writer could not turn process " + std::to_string(r) + "'s piece into bytes";
       }
-      catch (const std::bad_alloc&)
-      {
-        problem = "no memory to make process " + std::to_string(r) + "'s piece";
-      }
-    }
-    // A process that made no room for its piece says why itself (FirstFailure).
-    SendPieceTo(r, sends && problem.empty() ? &bytes : nullptr);
+    });
+    const std::string* piece = sends && problem.empty() ? &bytes : nullptr;
+    if (!SendPieceTo(r, piece) && piece)
+      refused = true;
   }
-  if (problem.empty() && !cellsOf.empty())
-  {
-    try
-    {
-      mesh->ShallowCopy(MeshPiece(mesh, cellsOf[0]));
-    }
-    catch (const std::bad_alloc&)
-    {
-      problem = "no memory to make its own piece";
-    }
-  }
-  return problem;
 }
 
 /// A process other than rank 0: its piece into `mesh`. Returns what went wrong ("" when nothing).
 std::string ReceivePiece(vtkUnstructuredGrid* mesh)
 {
   std::string bytes, problem;
-  if (ReceivePieceFromRankZero(bytes, problem) && !MeshFromBytes(bytes, mesh))
-    problem = "its piece of the output did not read back as a mesh";
+  const bool came = ReceivePieceFromRankZero(bytes, problem);
+  Attempt(problem, "read its piece back as a mesh", [&] {
+    if (came && !MeshFromBytes(bytes, mesh))
+      problem = "its piece of the output did not read back as a mesh";
+  });
   return problem;
 }
 
@@ -88,7 +100,20 @@ std::string ReceivePiece(vtkUnstructuredGrid* mesh)
 
 std::string HandOutPieces(vtkUnstructuredGrid* mesh)
 {
-  const std::string problem = WorldRank() == 0 ? SendPiecesFromRankZero(mesh, WorldSize()) : ReceivePiece(mesh);
+  std::string problem;
+  if (WorldRank() == 0)
+  {
+    const std::vector<std::vector<vtkIdType>> cellsOf = CutByProcess(mesh, WorldSize(), problem);
+    SendPieces(mesh, cellsOf, WorldSize(), problem);
+    Attempt(problem, "make its own piece", [&] {
+      if (!cellsOf.empty())
+        mesh->ShallowCopy(MeshPiece(mesh, cellsOf[0]));
+    });
+  }
+  else
+  {
+    problem = ReceivePiece(mesh);
+  }
   const std::string failure = FirstFailure(problem.empty() ? problem : "handing out the output's pieces: " + problem);
   if (!failure.empty())
     mesh->Initialize();

@@ -18,7 +18,8 @@ namespace labelmesher
 
 /// Collective over the world's processes. Rank 0 passes the whole mesh, whose
 /// cell array "Process" names the process each cell goes to (without it, rank
-/// 0 keeps every cell); the others pass a grid that receives their piece. Rank
+/// 0 keeps every cell; with no cell, rank 0 made no mesh, which fails); the
+/// others pass a grid that receives their piece. Rank
 /// 0 sends one piece at a time (only one piece's bytes are held at once), then
 /// keeps its own. Returns "" when every process holds its piece, else the
 /// lowest failing process's reason, the same on every process, every `mesh`

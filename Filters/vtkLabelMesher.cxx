@@ -462,6 +462,8 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     const std::string failure = labelmesher::HandOutPieces(output);
     if (!failure.empty())
     {
+      interfaces->Initialize(); // no output of a run whose mesh is lost
+      curved->Initialize();
       vtkErrorMacro(<< failure << ".");
     }
   }

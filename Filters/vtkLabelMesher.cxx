@@ -384,6 +384,7 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
   vtkInformation* inputInformation = inputVector[0]->GetInformationObject(0);
   // Decided once: meshing starts MPI when the application has not (MeshAndDecimate).
   const bool shares = this->SharesOutAcrossProcesses();
+  this->StoppedOnEveryProcess = false;
   const bool slabOnly = this->ReadsItsSlabOnly(inputInformation);
   // A parallel pipeline (ParaView's) asks each process for its own piece: each then gets the
   // cells of the parts it meshed (PieceHandOut.h).
@@ -457,14 +458,20 @@ int vtkLabelMesher::RequestData(vtkInformation*, vtkInformationVector** inputVec
     interfaces->Initialize();
     vtkErrorMacro("Meshing failed: " << e.what() << ".");
   }
-  if (handsOutPieces)
+  if (handsOutPieces && !this->StoppedOnEveryProcess)
   {
+    // Rank 0 without a mesh failed or stopped after the part every process takes together, and
+    // has said why; the others learn it here.
+    const bool saidWhy = labelmesher::WorldRank() == 0 && output->GetNumberOfCells() == 0;
     const std::string failure = labelmesher::HandOutPieces(output);
     if (!failure.empty())
     {
       interfaces->Initialize(); // no output of a run whose mesh is lost
       curved->Initialize();
-      vtkErrorMacro(<< failure << ".");
+      if (!saidWhy)
+      {
+        vtkErrorMacro(<< failure << ".");
+      }
     }
   }
   this->SetProgressText(nullptr);
@@ -638,6 +645,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
   if (!problem.empty())
   {
+    this->StoppedOnEveryProcess = exchange != nullptr;
     vtkErrorMacro(<< problem << ".");
     return false;
   }
@@ -705,13 +713,16 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
     result = labelmesher::MeshAndDecimate(image, mesher, decimation, streaming,
       labelmesher::ForwardProgress(this, 0.0, runShare), exchange.get(), slabs);
   }
+  // The streamed pipeline's failures and stops are agreed: under MPI every process is here.
   catch (const labelmesher::AbortRequested&)
   {
+    this->StoppedOnEveryProcess = exchange != nullptr;
     vtkWarningMacro("Meshing aborted on request: output is empty.");
     return false;
   }
   catch (const std::bad_alloc&)
   {
+    this->StoppedOnEveryProcess = exchange != nullptr;
     vtkErrorMacro("Meshing failed: out of memory (estimated beforehand to need "
       << labelmesher::FormatMiB(estimate.RunBytes) << " more; " << labelmesher::FormatMiB(budget.Bytes)
       << " were available: " << budget.Source << ").");
@@ -719,6 +730,7 @@ bool vtkLabelMesher::MeshAndDecimate(vtkImageData* input, vtkDataArray* labels, 
   }
   catch (const std::exception& e)
   {
+    this->StoppedOnEveryProcess = exchange != nullptr;
     vtkErrorMacro("Meshing failed: " << e.what() << ".");
     return false;
   }

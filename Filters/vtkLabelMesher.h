@@ -356,6 +356,9 @@ protected:
   vtkIdType BlockCells = 1000000;
   vtkIdType PartBlocks = 2;
   bool Distributed = false;
+  /// Set by MeshAndDecimate when the run stopped on every process at once (a failure they agreed
+  /// on): each has said why, and none waits for pieces (RequestData).
+  bool StoppedOnEveryProcess = false;
   bool IncludeBackground = false;
   bool MeasureOutput = true;
   double MemoryLimit = 0.0;
